@@ -1,0 +1,31 @@
+// The outer frame of every app's main(): turns any failure into one line on stderr, "<app>: <file>:
+// <cause>", and the exit code of DESIGN.md.
+#ifndef CGAL_POLICIES_APPS_APP_MAIN_H
+#define CGAL_POLICIES_APPS_APP_MAIN_H
+
+#include "App_error.h"
+
+#include <exception>
+#include <functional>
+#include <iostream>
+#include <new>
+
+namespace apps {
+
+inline int guarded_main(const char* app, const std::function<int()>& body) {
+  try {
+    return body();
+  } catch (const App_error& e) {
+    std::cerr << app << ": " << e.what() << '\n';
+    return e.code();
+  } catch (const std::bad_alloc&) {
+    std::cerr << app << ": out of memory\n";
+  } catch (const std::exception& e) {
+    std::cerr << app << ": " << e.what() << '\n';
+  }
+  return exit_not_done;
+}
+
+}  // namespace apps
+
+#endif  // CGAL_POLICIES_APPS_APP_MAIN_H

@@ -1,0 +1,178 @@
+#include "mesh_io.h"
+
+#include "App_error.h"
+
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+namespace fs = std::filesystem;
+
+namespace apps {
+namespace {
+
+using Polygon = std::vector<std::size_t>;
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+[[noreturn]] void fail_input(const std::string& path, const std::string& cause) {
+  throw App_error(exit_bad_input, path + ": " + cause);
+}
+
+[[noreturn]] void fail_output(const std::string& path, const std::string& cause) {
+  throw App_error(exit_bad_output, path + ": " + cause);
+}
+
+void check_readable_file(const std::string& path) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (!fs::exists(status)) fail_input(path, "cannot open: no such file");
+  if (fs::is_directory(status)) fail_input(path, "cannot open: is a directory");
+  std::ifstream probe(path, std::ios::binary);
+  if (!probe) fail_input(path, std::string("cannot open: ") + std::strerror(errno));
+  if (probe.peek() == std::ifstream::traits_type::eof()) fail_input(path, "empty file");
+  if (!has_supported_mesh_extension(path))
+    fail_input(path, "unsupported format '" + lower_extension(path) +
+                         "' (supported: .off, .obj, .ply, .stl)");
+}
+
+void check_soup(const std::string& path, const std::vector<Point>& points,
+                const std::vector<Polygon>& polygons) {
+  if (polygons.empty()) fail_input(path, "no faces");
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Point& p = points[i];
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+      fail_input(path, "non-finite coordinate at vertex " + std::to_string(i));
+  }
+  for (std::size_t f = 0; f < polygons.size(); ++f)
+    for (std::size_t index : polygons[f])
+      if (index >= points.size())
+        fail_input(path, "face " + std::to_string(f) + " refers to vertex " +
+                             std::to_string(index) + " but there are only " +
+                             std::to_string(points.size()));
+}
+
+// Repairs a soup that is not a valid polygon mesh as it stands, and says what it did.
+void repair_soup(std::vector<Point>& points, std::vector<Polygon>& polygons,
+                 std::vector<std::string>& repairs) {
+  const std::size_t points_before = points.size(), polygons_before = polygons.size();
+  PMP::repair_polygon_soup(points, polygons);
+  if (points.size() < points_before)
+    repairs.push_back("merged or dropped " + std::to_string(points_before - points.size()) +
+                      " duplicate or unused points");
+  if (polygons.size() < polygons_before)
+    repairs.push_back("dropped " + std::to_string(polygons_before - polygons.size()) +
+                      " degenerate or duplicate faces");
+  const std::size_t points_before_orient = points.size();
+  if (!PMP::orient_polygon_soup(points, polygons) || points.size() > points_before_orient)
+    repairs.push_back("oriented the faces and split " +
+                      std::to_string(points.size() - points_before_orient) +
+                      " non-manifold vertices");
+  else
+    repairs.push_back("oriented the faces consistently");
+}
+
+}  // namespace
+
+bool has_supported_mesh_extension(const std::string& path) {
+  static const char* const kExtensions[] = {".off", ".obj", ".ply", ".stl"};
+  const std::string ext = lower_extension(path);
+  return std::any_of(std::begin(kExtensions), std::end(kExtensions),
+                     [&](const char* known) { return ext == known; });
+}
+
+Mesh read_triangle_mesh(const std::string& path, Read_report* report) {
+  check_readable_file(path);
+  std::vector<Point> points;
+  std::vector<Polygon> polygons;
+  bool parsed = false;
+  try {
+    parsed = CGAL::IO::read_polygon_soup(path, points, polygons,
+                                         CGAL::parameters::verbose(false));
+  } catch (const std::exception& e) {
+    fail_input(path, std::string("cannot parse: ") + e.what());
+  }
+  if (!parsed) fail_input(path, "cannot parse: not a valid " + lower_extension(path) +
+                                    " file (malformed or truncated)");
+  check_soup(path, points, polygons);
+
+  std::vector<std::string> repairs;
+  if (!PMP::is_polygon_soup_a_polygon_mesh(polygons)) repair_soup(points, polygons, repairs);
+  if (polygons.empty()) fail_input(path, "no faces left after dropping degenerate ones");
+
+  Mesh mesh;
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  const std::size_t isolated = PMP::remove_isolated_vertices(mesh);
+  if (isolated > 0) repairs.push_back("removed " + std::to_string(isolated) + " unused vertices");
+  if (!CGAL::is_triangle_mesh(mesh)) {
+    std::size_t polygons_split = 0;
+    for (auto f : faces(mesh)) polygons_split += CGAL::degree(f, mesh) > 3;
+    if (!PMP::triangulate_faces(mesh)) fail_input(path, "a polygon could not be triangulated");
+    repairs.push_back("triangulated " + std::to_string(polygons_split) + " polygons");
+  }
+  mesh.collect_garbage();
+  if (!CGAL::is_valid_polygon_mesh(mesh)) fail_input(path, "not a valid polygon mesh");
+  if (report) report->repairs = repairs;
+  return mesh;
+}
+
+void check_output_path(const std::string& input, const std::string& output, bool force) {
+  if (!has_supported_mesh_extension(output))
+    throw App_error(exit_usage, output + ": unsupported output format '" +
+                                    lower_extension(output) + "' (use .off, .obj, .ply or .stl)");
+  std::error_code ec;
+  if (!force && fs::exists(output, ec) && fs::equivalent(input, output, ec))
+    throw App_error(exit_usage, output + ": refusing to overwrite the input (use --force)");
+}
+
+void write_mesh_atomically(const Mesh& mesh, const std::string& path) {
+  const fs::path target(path);
+  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec)) fail_output(path, "cannot write: no such folder");
+  // The temporary name keeps the extension: CGAL picks the format from it.
+  const fs::path temporary = folder / ("." + target.stem().string() + ".tmp-" +
+                                       std::to_string(::getpid()) + target.extension().string());
+  {
+    std::ofstream probe(temporary);
+    if (!probe) fail_output(path, std::string("cannot write: ") + std::strerror(errno));
+  }
+  bool written = false;
+  try {
+    written = CGAL::IO::write_polygon_mesh(temporary.string(), mesh,
+                                           CGAL::parameters::stream_precision(17));
+  } catch (const std::exception&) {
+    written = false;
+  }
+  if (!written) {
+    fs::remove(temporary, ec);
+    fail_output(path, "cannot write: the writer failed (disk full?)");
+  }
+  fs::rename(temporary, target, ec);
+  if (ec) {
+    fs::remove(temporary, ec);
+    fail_output(path, "cannot write: " + ec.message());
+  }
+}
+
+}  // namespace apps

@@ -1,0 +1,49 @@
+// Metro-style two-sided geometric error between two meshes (evaluation.md) and the validity
+// figures of one mesh, shared by mesh_error, simplify --measure and simplify_bench.
+#ifndef CGAL_POLICIES_APPS_MESH_MEASURES_H
+#define CGAL_POLICIES_APPS_MESH_MEASURES_H
+
+#include "Json_object.h"
+#include "Mesh_types.h"
+
+#include <cstddef>
+
+namespace apps {
+
+// Face samples per direction by default: doubling it moves the mean by well under 1%
+// (tests/mesh_error_test.cpp checks it on the bunny).
+constexpr std::size_t kDefaultErrorSamples = 200000;
+
+struct Mesh_error {
+  double bbox_diagonal = 0;  // of the first mesh, the reference
+  double hausdorff = 0;      // max of both one-sided maxima
+  double hausdorff_a_to_b = 0, hausdorff_b_to_a = 0;
+  double mean_a_to_b = 0, mean_b_to_a = 0;
+  double rms = 0;           // over the face samples of both directions
+  std::size_t samples = 0;  // face samples per direction (vertices are sampled as well)
+};
+
+struct Mesh_validity {
+  bool valid = false;   // a valid halfedge structure made of triangles only
+  bool closed = false;  // no boundary edge
+  std::size_t faces = 0, vertices = 0;
+  std::size_t boundary_edges = 0, non_manifold_vertices = 0, degenerate_faces = 0;
+  double min_angle_deg = 0;
+  long euler_characteristic = 0;
+};
+
+double bbox_diagonal(const Mesh& mesh);
+
+// Distances from samples of `a` (its vertices and `samples` random points on its faces, fixed seed)
+// to `b`, and the other way round, through AABB trees. Deterministic.
+Mesh_error measure_mesh_error(const Mesh& a, const Mesh& b,
+                              std::size_t samples = kDefaultErrorSamples);
+
+Mesh_validity check_mesh_validity(const Mesh& mesh);
+
+void add_fields(Json_object& json, const Mesh_error& error);
+void add_fields(Json_object& json, const Mesh_validity& validity);
+
+}  // namespace apps
+
+#endif  // CGAL_POLICIES_APPS_MESH_MEASURES_H

@@ -1,0 +1,16 @@
+// One function per source file of policies, each describing the policies it runs.
+#ifndef CGAL_POLICIES_APPS_POLICY_ENTRIES_H
+#define CGAL_POLICIES_APPS_POLICY_ENTRIES_H
+
+#include "policy_registry.h"
+
+#include <vector>
+
+namespace apps {
+
+std::vector<Policy_entry> cgal_baseline_policies();  // policies_cgal.cpp: gh, gh-prob, lt
+std::vector<Policy_entry> classic_policies();         // policies_classic.cpp: classic
+
+}  // namespace apps
+
+#endif  // CGAL_POLICIES_APPS_POLICY_ENTRIES_H

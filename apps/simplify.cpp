@@ -1,0 +1,157 @@
+// simplify IN OUT [RATIO]: simplifies a mesh with any policy of the suite (DESIGN.md).
+#include "common/App_error.h"
+#include "common/Command_line.h"
+#include "common/Json_object.h"
+#include "common/Progress_bar.h"
+#include "common/app_main.h"
+#include "common/mesh_io.h"
+#include "common/mesh_measures.h"
+#include "common/peak_memory.h"
+#include "common/policy_registry.h"
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+namespace apps {
+namespace {
+
+void print_help() {
+  std::cout
+      << "usage: simplify IN OUT [RATIO] [options]\n"
+         "Simplifies the triangle mesh IN (.off .obj .ply .stl) and writes OUT.\n\n"
+         "  RATIO, --ratio R      keep this fraction of the faces, 0 < R <= 1\n"
+         "  --faces N             keep N faces instead\n"
+         "  --policy NAME         " << policy_names() << " (default classic)\n"
+         "  --max-normal-angle A  our policies refuse collapses that turn a face normal by\n"
+         "                        more than A degrees (default 90)\n"
+         "  --json                print one JSON object on stdout\n"
+         "  --measure             also measure the two-sided error against IN\n"
+         "  --samples N           face samples per direction for --measure (default "
+      << kDefaultErrorSamples << ")\n"
+         "  --force               allow OUT to be the same file as IN\n"
+         "  --quiet               no progress bar, no summary\n"
+         "  --help                this text\n\n"
+         "Policy options (all lengths are fractions of IN's bounding-box diagonal):\n";
+  for (const Policy_entry& p : policy_registry()) {
+    std::cout << "  " << p.name << ": " << p.summary << '\n';
+    for (const Policy_option& o : p.options)
+      std::cout << "      --" << o.name << (o.is_flag ? "" : " X") << "  " << o.help
+                << (o.is_flag ? "" : " (default " + Json_object::format_number(o.default_value) + ")")
+                << '\n';
+  }
+  std::cout << "\nExit codes: 0 done, 1 not done, 2 bad usage, 3 bad input, 4 output not written.\n";
+}
+
+std::size_t target_face_count(std::optional<double> ratio, std::optional<double> faces,
+                              std::size_t input_faces) {
+  if (ratio && faces) throw App_error(exit_usage, "give a ratio or --faces, not both");
+  if (faces) {
+    if (*faces < 1 || *faces != std::floor(*faces))
+      throw App_error(exit_usage, "--faces must be a whole number of at least 1");
+    return std::size_t(*faces);
+  }
+  if (!ratio) throw App_error(exit_usage, "give RATIO, --ratio or --faces (see --help)");
+  if (!(*ratio > 0 && *ratio <= 1)) throw App_error(exit_usage, "the ratio must be in (0, 1]");
+  return std::size_t(std::llround(*ratio * double(input_faces)));
+}
+
+int run(int argc, char** argv) {
+  Command_line cli(argc, argv);
+  if (cli.take_flag("help", "-h")) {
+    print_help();
+    return exit_success;
+  }
+  const std::string policy_name = cli.take_value("policy").value_or("classic");
+  const Policy_entry* policy = find_policy(policy_name);
+  if (!policy)
+    throw App_error(exit_usage, "unknown policy '" + policy_name + "' (" + policy_names() + ")");
+  std::optional<double> ratio = cli.take_number("ratio");
+  const std::optional<double> faces = cli.take_number("faces");
+  const double max_normal_angle = cli.take_number("max-normal-angle").value_or(90.0);
+  const std::optional<double> samples = cli.take_number("samples");
+  const bool json = cli.take_flag("json"), measure = cli.take_flag("measure"),
+             force = cli.take_flag("force"), quiet = cli.take_flag("quiet");
+  Simplify_settings settings = default_settings(*policy, 0);
+  settings.max_normal_angle_deg = max_normal_angle;
+  for (const Policy_option& o : policy->options) {
+    if (o.is_flag) {
+      if (cli.take_flag(o.name)) settings.options[o.name] = 1;
+    } else if (const auto value = cli.take_number(o.name)) {
+      settings.options[o.name] = *value;
+    }
+  }
+  const std::vector<std::string> args = cli.positionals();
+  if (args.size() < 2 || args.size() > 3)
+    throw App_error(exit_usage, "usage: simplify IN OUT [RATIO] [options] (see --help)");
+  if (args.size() == 3) {
+    if (ratio) throw App_error(exit_usage, "give RATIO or --ratio, not both");
+    ratio = parse_number(args[2], "RATIO");
+  }
+  if (samples && !(*samples >= 1)) throw App_error(exit_usage, "--samples must be at least 1");
+  const std::string& input = args[0];
+  const std::string& output = args[1];
+  check_output_path(input, output, force);
+
+  Read_report read_report;
+  Mesh mesh = read_triangle_mesh(input, &read_report);
+  if (!quiet)
+    for (const std::string& repair : read_report.repairs)
+      std::cerr << "simplify: " << input << ": " << repair << '\n';
+  const std::size_t input_faces = mesh.number_of_faces();
+  const std::size_t input_vertices = mesh.number_of_vertices();
+  settings.target_faces = target_face_count(ratio, faces, input_faces);
+  const Mesh original = measure ? mesh : Mesh();
+
+  Simplify_outcome outcome;
+  {
+    Progress_bar bar(input_faces, settings.target_faces, !quiet);
+    settings.on_progress = [&bar](std::size_t now) { bar.update(now); };
+    outcome = policy->run(mesh, settings);
+  }
+  mesh.collect_garbage();
+  write_mesh_atomically(mesh, output);
+
+  const std::size_t removed = input_faces - mesh.number_of_faces();
+  Json_object report;
+  report.add("policy", policy->name);
+  report.add("input", input);
+  report.add("output", output);
+  report.add("input_faces", input_faces);
+  report.add("input_vertices", input_vertices);
+  report.add("target_faces", settings.target_faces);
+  report.add("output_faces", mesh.number_of_faces());
+  report.add("output_vertices", mesh.number_of_vertices());
+  report.add("seconds", outcome.seconds);
+  report.add("faces_removed_per_second", outcome.seconds > 0 ? removed / outcome.seconds : 0.0);
+  report.add("peak_memory_mib", peak_rss_mib());
+  report.add("stop_reason", outcome.stop_reason);
+  report.add("repairs", read_report.repairs);
+  for (const auto& [name, value] : settings.options) report.add("option_" + name, value);
+  Mesh_error error;
+  if (measure) {
+    error = measure_mesh_error(original, mesh, samples ? std::size_t(*samples) : kDefaultErrorSamples);
+    add_fields(report, error);
+    add_fields(report, check_mesh_validity(mesh));
+  }
+
+  if (json) {
+    std::cout << report.str() << '\n';
+  } else if (!quiet) {
+    std::printf("%s: %zu -> %zu faces in %.3f s (%s)\n", policy->name.c_str(), input_faces,
+                std::size_t(mesh.number_of_faces()), outcome.seconds, outcome.stop_reason.c_str());
+    if (measure)
+      std::printf("two-sided Hausdorff %.4f%%, mean %.4f%% / %.4f%% of the diagonal\n",
+                  100 * error.hausdorff / error.bbox_diagonal,
+                  100 * error.mean_a_to_b / error.bbox_diagonal,
+                  100 * error.mean_b_to_a / error.bbox_diagonal);
+  }
+  return exit_success;
+}
+
+}  // namespace
+}  // namespace apps
+
+int main(int argc, char** argv) {
+  return apps::guarded_main("simplify", [&] { return apps::run(argc, argv); });
+}

@@ -1,0 +1,77 @@
+// The placement chain of the QEM tutorial (seed 001; policies.md §0): the quadric's minimiser when
+// it is well defined, else the best point of the edge, else the best of its ends and midpoint.
+#ifndef CGAL_POLICIES_INTERNAL_QUADRIC_PLACEMENT_H
+#define CGAL_POLICIES_INTERNAL_QUADRIC_PLACEMENT_H
+
+#include <cgal_policies/internal/Quadric.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+
+namespace cgal_policies {
+namespace internal {
+
+enum class Placement_branch { solve, segment, best_of_three };
+
+struct Quadric_placement {
+  Eigen::Vector3d point;
+  Placement_branch branch;
+};
+
+// Smallest over largest eigenvalue of A below which the 3x3 solve is not trusted: a plain
+// determinant test passes nearly flat quadrics whose minimiser flies far away.
+constexpr double kMinimumConditioning = 1e-6;
+// A minimiser farther than this many edge lengths from the edge is rejected as unstable.
+constexpr double kMaximumSolveDistance = 2.0;
+
+inline double squared_distance_to_segment(const Eigen::Vector3d& x, const Eigen::Vector3d& p0,
+                                          const Eigen::Vector3d& p1) {
+  const Eigen::Vector3d d = p1 - p0;
+  const double length2 = d.squaredNorm();
+  const double t = length2 > 0 ? std::clamp((x - p0).dot(d) / length2, 0.0, 1.0) : 0.0;
+  return (x - (p0 + t * d)).squaredNorm();
+}
+
+inline Quadric_placement optimal_placement(const Quadric& q, const Eigen::Vector3d& p0,
+                                           const Eigen::Vector3d& p1) {
+  const Eigen::Matrix3d a = q.linear_part();
+  const Eigen::Vector3d b = q.offset();
+  const Eigen::Vector3d d = p1 - p0;
+
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+  eigen.computeDirect(a, Eigen::EigenvaluesOnly);
+  const double largest = eigen.eigenvalues()(2);
+  if (largest > 0 && eigen.eigenvalues()(0) > kMinimumConditioning * largest) {
+    const Eigen::Vector3d x = a.inverse() * (-b);
+    const double limit = kMaximumSolveDistance * kMaximumSolveDistance * d.squaredNorm();
+    if (x.allFinite() && squared_distance_to_segment(x, p0, p1) <= limit)
+      return {x, Placement_branch::solve};
+  }
+
+  // Along p0 + t d the quadric is (d.A.d) t^2 + 2 (A p0 + b).d t + const.
+  const double curvature = d.dot(a * d);
+  if (curvature > 1e-12 * a.trace() * d.squaredNorm()) {
+    const double t = std::clamp(-(a * p0 + b).dot(d) / curvature, 0.0, 1.0);
+    return {p0 + t * d, Placement_branch::segment};
+  }
+
+  // Ties go to the first in this order, so flat regions keep original vertex positions.
+  const Eigen::Vector3d candidates[] = {p0, p1, 0.5 * (p0 + p1)};
+  const Eigen::Vector3d* best = &candidates[0];
+  double best_cost = q.evaluate(*best);
+  for (const Eigen::Vector3d& c : candidates) {
+    const double cost = q.evaluate(c);
+    if (cost < best_cost) {
+      best_cost = cost;
+      best = &c;
+    }
+  }
+  return {*best, Placement_branch::best_of_three};
+}
+
+}  // namespace internal
+}  // namespace cgal_policies
+
+#endif  // CGAL_POLICIES_INTERNAL_QUADRIC_PLACEMENT_H

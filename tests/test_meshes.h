@@ -1,0 +1,78 @@
+// Tiny meshes built by hand for exact tests, and access to the shared real meshes.
+#ifndef CGAL_POLICIES_TESTS_TEST_MESHES_H
+#define CGAL_POLICIES_TESTS_TEST_MESHES_H
+
+#include "common/Mesh_types.h"
+#include "common/mesh_io.h"
+
+#include <CGAL/Polygon_mesh_processing/transform.h>
+#include <CGAL/boost/graph/generators.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace test_meshes {
+
+using apps::Mesh;
+using apps::Point;
+
+// A mesh from points and triangles given as index triples.
+inline Mesh from_triangles(const std::vector<Point>& points,
+                           const std::vector<std::array<int, 3>>& triangles) {
+  Mesh mesh;
+  std::vector<Mesh::Vertex_index> v;
+  for (const Point& p : points) v.push_back(mesh.add_vertex(p));
+  for (const auto& t : triangles) mesh.add_face(v[t[0]], v[t[1]], v[t[2]]);
+  return mesh;
+}
+
+// An n x n grid of squares in the plane z = 0 over [0, n]^2, each square split along its diagonal
+// (2 n^2 triangles, an open disk).
+inline Mesh flat_grid(int n) {
+  std::vector<Point> points;
+  std::vector<std::array<int, 3>> triangles;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) points.emplace_back(i, j, 0);
+  auto id = [n](int i, int j) { return j * (n + 1) + i; };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return from_triangles(points, triangles);
+}
+
+inline Mesh icosahedron() {
+  Mesh mesh;
+  CGAL::make_icosahedron<Mesh, Point>(mesh, Point(0, 0, 0), 1.0);
+  return mesh;
+}
+
+inline Mesh tetrahedron() {
+  Mesh mesh;
+  CGAL::make_tetrahedron(Point(1, 1, 1), Point(1, -1, -1), Point(-1, 1, -1), Point(-1, -1, 1),
+                         mesh);
+  return mesh;
+}
+
+inline std::string shared_data(const std::string& name) {
+  return std::string(CGAL_POLICIES_SHARED_DATA) + "/" + name;
+}
+
+inline bool shared_data_available() {
+  return std::filesystem::exists(shared_data("bunny.obj"));
+}
+
+}  // namespace test_meshes
+
+// Skips the current test, with a message, when ../shared/data is not beside the project.
+#define SKIP_WITHOUT_SHARED_DATA()                                                        \
+  do {                                                                                    \
+    if (!test_meshes::shared_data_available())                                            \
+      GTEST_SKIP() << "../shared/data is absent: real-mesh tests need it beside the project"; \
+  } while (0)
+
+#endif  // CGAL_POLICIES_TESTS_TEST_MESHES_H
