@@ -51,16 +51,17 @@ int run(int argc, char** argv) {
   std::printf("reference diagonal  %.6g (%zu face samples per direction)\n", d, error.samples);
   std::printf("%-20s %14s %12s\n", "", "absolute", "% diagonal");
   const std::pair<const char*, double> rows[] = {
-      {"Hausdorff", error.hausdorff},     {"max A->B", error.hausdorff_a_to_b},
+      {"Hausdorff", error.hausdorff},       {"max A->B", error.hausdorff_a_to_b},
       {"max B->A", error.hausdorff_b_to_a}, {"mean A->B", error.mean_a_to_b},
-      {"mean B->A", error.mean_b_to_a},   {"RMS", error.rms}};
+      {"mean B->A", error.mean_b_to_a},     {"RMS", error.rms}};
   for (const auto& [name, value] : rows)
     std::printf("%-20s %14.6g %12.5f\n", name, value, 100 * value / d);
-  std::printf("B: %s, %s, %zu faces, %zu boundary edges, %zu non-manifold vertices, "
-              "%zu degenerate faces, min angle %.2f deg\n",
-              validity.valid ? "valid" : "INVALID", validity.closed ? "closed" : "open",
-              validity.faces, validity.boundary_edges, validity.non_manifold_vertices,
-              validity.degenerate_faces, validity.min_angle_deg);
+  std::printf(
+      "B: %s, %s, %zu faces, %zu boundary edges, %zu non-manifold vertices, "
+      "%zu degenerate faces, min angle %.2f deg\n",
+      validity.valid ? "valid" : "INVALID", validity.closed ? "closed" : "open", validity.faces,
+      validity.boundary_edges, validity.non_manifold_vertices, validity.degenerate_faces,
+      validity.min_angle_deg);
   return exit_success;
 }
 

@@ -8,6 +8,9 @@
 #include "common/mesh_measures.h"
 #include "common/peak_memory.h"
 #include "common/policy_registry.h"
+#include "common/smoothing.h"
+
+#include <cgal_policies/Border_pair_contraction.h>
 
 #include <cmath>
 #include <cstdio>
@@ -22,13 +25,21 @@ void print_help() {
          "Simplifies the triangle mesh IN (.off .obj .ply .stl) and writes OUT.\n\n"
          "  RATIO, --ratio R      keep this fraction of the faces, 0 < R <= 1\n"
          "  --faces N             keep N faces instead\n"
-         "  --policy NAME         " << policy_names() << " (default classic)\n"
+         "  --policy NAME         "
+      << policy_names()
+      << " (default classic)\n"
          "  --max-normal-angle A  our policies refuse collapses that turn a face normal by\n"
          "                        more than A degrees (default 90)\n"
-         "  --json                print one JSON object on stdout\n"
+         "  --max-error X         also stop before the output's two-sided Hausdorff distance\n"
+         "                        to IN would exceed X (a fraction of IN's diagonal)\n"
+         "  --merge-distance T    first stitch border vertices of different border loops\n"
+         "                        closer than T (a fraction of IN's diagonal; default 0, off)\n"
+      << smoothing_help()
+      << "  --json                print one JSON object on stdout\n"
          "  --measure             also measure the two-sided error against IN\n"
          "  --samples N           face samples per direction for --measure (default "
-      << kDefaultErrorSamples << ")\n"
+      << kDefaultErrorSamples
+      << ")\n"
          "  --force               allow OUT to be the same file as IN\n"
          "  --quiet               no progress bar, no summary\n"
          "  --help                this text\n\n"
@@ -37,10 +48,12 @@ void print_help() {
     std::cout << "  " << p.name << ": " << p.summary << '\n';
     for (const Policy_option& o : p.options)
       std::cout << "      --" << o.name << (o.is_flag ? "" : " X") << "  " << o.help
-                << (o.is_flag ? "" : " (default " + Json_object::format_number(o.default_value) + ")")
+                << (o.is_flag ? ""
+                              : " (default " + Json_object::format_number(o.default_value) + ")")
                 << '\n';
   }
-  std::cout << "\nExit codes: 0 done, 1 not done, 2 bad usage, 3 bad input, 4 output not written.\n";
+  std::cout
+      << "\nExit codes: 0 done, 1 not done, 2 bad usage, 3 bad input, 4 output not written.\n";
 }
 
 std::size_t target_face_count(std::optional<double> ratio, std::optional<double> faces,
@@ -70,10 +83,16 @@ int run(int argc, char** argv) {
   const std::optional<double> faces = cli.take_number("faces");
   const double max_normal_angle = cli.take_number("max-normal-angle").value_or(90.0);
   const std::optional<double> samples = cli.take_number("samples");
+  const std::optional<double> max_error = cli.take_number("max-error");
+  const double merge_distance = cli.take_number("merge-distance").value_or(0.0);
+  if (!(merge_distance >= 0)) throw App_error(exit_usage, "--merge-distance must be at least 0");
+  const Smoothing_request smoothing = take_smoothing_options(cli);
   const bool json = cli.take_flag("json"), measure = cli.take_flag("measure"),
              force = cli.take_flag("force"), quiet = cli.take_flag("quiet");
   Simplify_settings settings = default_settings(*policy, 0);
   settings.max_normal_angle_deg = max_normal_angle;
+  if (max_error && !(*max_error > 0)) throw App_error(exit_usage, "--max-error must be positive");
+  settings.max_error = max_error.value_or(0.0);
   for (const Policy_option& o : policy->options) {
     if (o.is_flag) {
       if (cli.take_flag(o.name)) settings.options[o.name] = 1;
@@ -89,6 +108,13 @@ int run(int argc, char** argv) {
     ratio = parse_number(args[2], "RATIO");
   }
   if (samples && !(*samples >= 1)) throw App_error(exit_usage, "--samples must be at least 1");
+  const auto tolerance_option = settings.options.find("tolerance");
+  const double smoothing_tolerance = max_error ? *max_error
+                                     : tolerance_option != settings.options.end()
+                                         ? tolerance_option->second
+                                         : 0.0;
+  if (smoothing.bounded && !(smoothing_tolerance > 0))
+    throw App_error(exit_usage, "--smooth-bounded needs --max-error (or a policy's --tolerance)");
   const std::string& input = args[0];
   const std::string& output = args[1];
   check_output_path(input, output, force);
@@ -101,7 +127,11 @@ int run(int argc, char** argv) {
   const std::size_t input_faces = mesh.number_of_faces();
   const std::size_t input_vertices = mesh.number_of_vertices();
   settings.target_faces = target_face_count(ratio, faces, input_faces);
-  const Mesh original = measure ? mesh : Mesh();
+  const Mesh original = measure || smoothing.bounded ? mesh : Mesh();
+  // The pre-pass (policies.md §0, pair contraction) is not part of the simplification's time.
+  const cgal_policies::Border_pair_contraction_report merge_report =
+      cgal_policies::Border_pair_contraction(merge_distance)(mesh);
+  if (merge_report.stitched_edges > 0) mesh.collect_garbage();
 
   Simplify_outcome outcome;
   {
@@ -110,6 +140,10 @@ int run(int argc, char** argv) {
     outcome = policy->run(mesh, settings);
   }
   mesh.collect_garbage();
+  if (max_error && outcome.stop_reason == "no_collapse_left")
+    outcome.stop_reason = "error_bound_reached";
+  const std::size_t refused_smoothing_moves =
+      smooth_mesh(mesh, original, smoothing, smoothing_tolerance);
   write_mesh_atomically(mesh, output);
 
   const std::size_t removed = input_faces - mesh.number_of_faces();
@@ -126,11 +160,21 @@ int run(int argc, char** argv) {
   report.add("faces_removed_per_second", outcome.seconds > 0 ? removed / outcome.seconds : 0.0);
   report.add("peak_memory_mib", peak_rss_mib());
   report.add("stop_reason", outcome.stop_reason);
+  report.add("max_error", settings.max_error);
+  report.add("smooth_iterations", smoothing.iterations);
+  report.add("smooth_refused_moves", refused_smoothing_moves);
   report.add("repairs", read_report.repairs);
+  report.add("merge_distance", merge_distance);
+  report.add("merged_pairs", merge_report.merged_pairs);
+  report.add("stitched_edges", merge_report.stitched_edges);
+  report.add("refused_pairs", merge_report.refused_pairs);
+  for (const auto& [reason, count] : merge_report.refused_by_reason)
+    report.add("refused_pairs_" + reason, count);
   for (const auto& [name, value] : settings.options) report.add("option_" + name, value);
   Mesh_error error;
   if (measure) {
-    error = measure_mesh_error(original, mesh, samples ? std::size_t(*samples) : kDefaultErrorSamples);
+    error =
+        measure_mesh_error(original, mesh, samples ? std::size_t(*samples) : kDefaultErrorSamples);
     add_fields(report, error);
     add_fields(report, check_mesh_validity(mesh));
   }

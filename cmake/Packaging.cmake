@@ -1,6 +1,5 @@
 # Installs the headers and an exported package, so that a consumer writes
 #   find_package(cgal_policies) and target_link_libraries(app PRIVATE cgal_policies::cgal_policies).
-include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 set(CGAL_POLICIES_CMAKE_DIR "${CMAKE_INSTALL_LIBDIR}/cmake/cgal_policies")

@@ -5,11 +5,12 @@
 #include "common/Mesh_types.h"
 #include "common/mesh_io.h"
 
-#include <CGAL/Polygon_mesh_processing/transform.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Edge_profile.h>
 #include <CGAL/boost/graph/generators.h>
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -58,21 +59,37 @@ inline Mesh tetrahedron() {
   return mesh;
 }
 
+using Profile = CGAL::Surface_mesh_simplification::Edge_profile<
+    Mesh, Mesh::Property_map<Mesh::Vertex_index, Point>, apps::Kernel>;
+
+// The profile edge_collapse would hand to the policies for the collapse of h (source into target).
+inline Profile edge_profile(Mesh& mesh, Mesh::Halfedge_index h) {
+  static const apps::Kernel kernel;
+  return Profile(h, mesh, kernel, 0, mesh.points(), 0, true);
+}
+
 inline std::string shared_data(const std::string& name) {
   return std::string(CGAL_POLICIES_SHARED_DATA) + "/" + name;
 }
 
-inline bool shared_data_available() {
-  return std::filesystem::exists(shared_data("bunny.obj"));
+inline bool shared_data_available() { return std::filesystem::exists(shared_data("bunny.obj")); }
+
+// CI's sanitizer pass sets CGAL_POLICIES_SKIP_REAL_MESHES: real meshes are many times slower
+// to simplify in an instrumented Debug build, and the Release pass runs them all.
+inline bool real_meshes_skipped() {
+  return std::getenv("CGAL_POLICIES_SKIP_REAL_MESHES") != nullptr;
 }
 
 }  // namespace test_meshes
 
-// Skips the current test, with a message, when ../shared/data is not beside the project.
-#define SKIP_WITHOUT_SHARED_DATA()                                                        \
-  do {                                                                                    \
-    if (!test_meshes::shared_data_available())                                            \
-      GTEST_SKIP() << "../shared/data is absent: real-mesh tests need it beside the project"; \
+// Skips the current test, with a message, when ../shared/data is not beside the project or real
+// meshes are skipped on purpose.
+#define SKIP_WITHOUT_SHARED_DATA()                                                              \
+  do {                                                                                          \
+    if (!test_meshes::shared_data_available())                                                  \
+      GTEST_SKIP() << "../shared/data is absent: real-mesh tests need it beside the project";   \
+    if (test_meshes::real_meshes_skipped())                                                     \
+      GTEST_SKIP() << "CGAL_POLICIES_SKIP_REAL_MESHES is set: real meshes run in Release only"; \
   } while (0)
 
 #endif  // CGAL_POLICIES_TESTS_TEST_MESHES_H

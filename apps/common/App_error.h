@@ -9,10 +9,10 @@ namespace apps {
 
 enum Exit_code : int {
   exit_success = 0,
-  exit_not_done = 1,     // the work could not be done (e.g. an error bound could not be met)
-  exit_usage = 2,        // bad command line
-  exit_bad_input = 3,    // unreadable or invalid input
-  exit_bad_output = 4    // the output could not be written
+  exit_not_done = 1,   // the work could not be done (e.g. an error bound could not be met)
+  exit_usage = 2,      // bad command line
+  exit_bad_input = 3,  // unreadable or invalid input
+  exit_bad_output = 4  // the output could not be written
 };
 
 class App_error : public std::runtime_error {

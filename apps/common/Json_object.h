@@ -16,9 +16,8 @@ class Json_object {
   void add(const std::string& key, const char* value) { add(key, std::string(value)); }
   void add(const std::string& key, bool value) { push(key, value ? "true" : "false"); }
   void add(const std::string& key, double value) { push(key, format_number(value)); }
-  template <typename Integer,
-            typename = std::enable_if_t<std::is_integral<Integer>::value &&
-                                        !std::is_same<Integer, bool>::value>>
+  template <typename Integer, typename = std::enable_if_t<std::is_integral<Integer>::value &&
+                                                          !std::is_same<Integer, bool>::value>>
   void add(const std::string& key, Integer value) {
     push(key, std::to_string(value));
   }

@@ -23,8 +23,8 @@ class Progress_bar {
 
   void update(std::size_t faces) {
     if (!m_enabled || m_start <= m_target) return;
-    const double done =
-        std::clamp(double(m_start - std::min(faces, m_start)) / double(m_start - m_target), 0.0, 1.0);
+    const double done = std::clamp(
+        double(m_start - std::min(faces, m_start)) / double(m_start - m_target), 0.0, 1.0);
     const int width = 40, filled = int(done * width);
     std::fprintf(stderr, "\r[%.*s%*s] %3d%%  %zu faces", filled,
                  "========================================", width - filled, "", int(done * 100),

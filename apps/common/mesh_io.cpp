@@ -2,15 +2,17 @@
 
 #include "App_error.h"
 
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/stitch_borders.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include <unistd.h>
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -18,7 +20,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 namespace PMP = CGAL::Polygon_mesh_processing;
 namespace fs = std::filesystem;
@@ -107,13 +108,13 @@ Mesh read_triangle_mesh(const std::string& path, Read_report* report) {
   std::vector<Polygon> polygons;
   bool parsed = false;
   try {
-    parsed = CGAL::IO::read_polygon_soup(path, points, polygons,
-                                         CGAL::parameters::verbose(false));
+    parsed = CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false));
   } catch (const std::exception& e) {
     fail_input(path, std::string("cannot parse: ") + e.what());
   }
-  if (!parsed) fail_input(path, "cannot parse: not a valid " + lower_extension(path) +
-                                    " file (malformed or truncated)");
+  if (!parsed)
+    fail_input(path, "cannot parse: not a valid " + lower_extension(path) +
+                         " file (malformed or truncated)");
   check_soup(path, points, polygons);
 
   std::vector<std::string> repairs;
@@ -122,6 +123,13 @@ Mesh read_triangle_mesh(const std::string& path, Read_report* report) {
 
   Mesh mesh;
   PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  // Orienting cuts the soup wherever it is not manifold, more than it must; stitching puts back
+  // together the border edges that can be joined without breaking manifoldness.
+  if (!repairs.empty()) {
+    if (const std::size_t stitched = PMP::stitch_borders(mesh))
+      repairs.push_back("stitched " + std::to_string(stitched) +
+                        " border edge pairs back together");
+  }
   const std::size_t isolated = PMP::remove_isolated_vertices(mesh);
   if (isolated > 0) repairs.push_back("removed " + std::to_string(isolated) + " unused vertices");
   if (!CGAL::is_triangle_mesh(mesh)) {
@@ -138,8 +146,8 @@ Mesh read_triangle_mesh(const std::string& path, Read_report* report) {
 
 void check_output_path(const std::string& input, const std::string& output, bool force) {
   if (!has_supported_mesh_extension(output))
-    throw App_error(exit_usage, output + ": unsupported output format '" +
-                                    lower_extension(output) + "' (use .off, .obj, .ply or .stl)");
+    throw App_error(exit_usage, output + ": unsupported output format '" + lower_extension(output) +
+                                    "' (use .off, .obj, .ply or .stl)");
   std::error_code ec;
   if (!force && fs::exists(output, ec) && fs::equivalent(input, output, ec))
     throw App_error(exit_usage, output + ": refusing to overwrite the input (use --force)");

@@ -4,14 +4,16 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
-#include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/point_generators_3.h>
 
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <numeric>
+#include <set>
 #include <thread>
 #include <vector>
 
@@ -49,14 +51,46 @@ std::vector<double> squared_distances(const std::vector<Point>& points, const Tr
   return result;
 }
 
+// Random samples can only fall short of the maximum distance, most where faces are large: the
+// faces that hold the farthest samples are sampled again on a fine barycentric grid.
+std::vector<Point> dense_samples_near_the_worst(const Mesh& from, const std::vector<Point>& points,
+                                                const std::vector<double>& d2) {
+  constexpr std::size_t kWorstSamples = 256;
+  constexpr int kGridSteps = 24;
+  std::vector<std::size_t> order(points.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  const std::size_t worst = std::min(kWorstSamples, order.size());
+  std::partial_sort(
+      order.begin(), order.begin() + worst, order.end(),
+      [&](std::size_t i, std::size_t j) { return d2[i] > d2[j] || (d2[i] == d2[j] && i < j); });
+  Tree from_tree(faces(from).first, faces(from).second, from);
+  std::set<Mesh::Face_index> worst_faces;
+  for (std::size_t k = 0; k < worst; ++k)
+    worst_faces.insert(from_tree.closest_point_and_primitive(points[order[k]]).second);
+  std::vector<Point> dense;
+  for (Mesh::Face_index f : worst_faces) {
+    const auto h = halfedge(f, from);
+    const Point& a = from.point(source(h, from));
+    const Point& b = from.point(target(h, from));
+    const Point& c = from.point(target(next(h, from), from));
+    for (int i = 0; i <= kGridSteps; ++i)
+      for (int j = 0; i + j <= kGridSteps; ++j)
+        dense.push_back(a + (double(i) / kGridSteps) * (b - a) +
+                        (double(j) / kGridSteps) * (c - a));
+  }
+  return dense;
+}
+
 One_sided one_sided_distance(const Mesh& from, const Mesh& to, std::size_t samples) {
+  // CGAL 5.5's triangle-mesh point generator (behind sample_triangle_mesh) picks a face with the
+  // generator it is given but the point inside the face with CGAL's default generator, so that is
+  // the one seeded here.
   std::vector<Point> points;
   points.reserve(samples + from.number_of_vertices());
-  PMP::sample_triangle_mesh(from, std::back_inserter(points),
-                            CGAL::parameters::number_of_points_on_faces(samples)
-                                .do_sample_vertices(false)
-                                .do_sample_edges(false)
-                                .random_seed(kSamplingSeed));
+  CGAL::Random& random = CGAL::get_default_random();
+  random = CGAL::Random(kSamplingSeed);
+  std::copy_n(CGAL::Random_points_in_triangle_mesh_3<Mesh>(from, random), samples,
+              std::back_inserter(points));
   const std::size_t face_samples = points.size();
   for (auto v : vertices(from)) points.push_back(from.point(v));
 
@@ -73,6 +107,8 @@ One_sided one_sided_distance(const Mesh& from, const Mesh& to, std::size_t sampl
       result.sum_of_squares += d2[i];
     }
   }
+  const std::vector<Point> dense = dense_samples_near_the_worst(from, points, d2);
+  for (double refined : squared_distances(dense, tree)) result.max = std::max(result.max, refined);
   result.max = std::sqrt(result.max);
   result.mean = face_samples ? sum / double(face_samples) : 0;
   return result;
@@ -104,7 +140,8 @@ Mesh_error measure_mesh_error(const Mesh& a, const Mesh& b, std::size_t samples)
   error.hausdorff = std::max(ab.max, ba.max);
   error.mean_a_to_b = ab.mean;
   error.mean_b_to_a = ba.mean;
-  error.rms = samples ? std::sqrt((ab.sum_of_squares + ba.sum_of_squares) / double(2 * samples)) : 0;
+  error.rms =
+      samples ? std::sqrt((ab.sum_of_squares + ba.sum_of_squares) / double(2 * samples)) : 0;
   error.samples = samples;
   return error;
 }
@@ -134,8 +171,8 @@ Mesh_validity check_mesh_validity(const Mesh& mesh) {
     v.min_angle_deg = std::min({v.min_angle_deg, corner_angle_deg(p, q, r),
                                 corner_angle_deg(q, r, p), corner_angle_deg(r, p, q)});
   }
-  v.euler_characteristic = long(mesh.number_of_vertices()) - long(mesh.number_of_edges()) +
-                           long(mesh.number_of_faces());
+  v.euler_characteristic =
+      long(mesh.number_of_vertices()) - long(mesh.number_of_edges()) + long(mesh.number_of_faces());
   return v;
 }
 

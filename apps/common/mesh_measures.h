@@ -34,8 +34,9 @@ struct Mesh_validity {
 
 double bbox_diagonal(const Mesh& mesh);
 
-// Distances from samples of `a` (its vertices and `samples` random points on its faces, fixed seed)
-// to `b`, and the other way round, through AABB trees. Deterministic.
+// Distances from samples of `a` (its vertices and `samples` area-uniform random points on its
+// faces, fixed seed, plus a fine grid on the faces of the farthest samples) to `b`, and the other
+// way round, through AABB trees. Deterministic.
 Mesh_error measure_mesh_error(const Mesh& a, const Mesh& b,
                               std::size_t samples = kDefaultErrorSamples);
 

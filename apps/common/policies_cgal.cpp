@@ -1,4 +1,5 @@
-// CGAL's own policies, run as CGAL ships them (no extra filter), as the baselines of policies.md §4.
+// CGAL's own policies, run as CGAL ships them (no extra filter), as the baselines of policies.md
+// §4.
 #include "edge_collapse_runner.h"
 #include "policy_entries.h"
 
@@ -17,7 +18,8 @@ const SMS::internal::Dummy_filter kNoFilter;
 template <typename Policies>
 Simplify_outcome run_garland_heckbert(Mesh& mesh, const Simplify_settings& settings) {
   const Policies policies(mesh);
-  return run_edge_collapse(mesh, settings, policies.get_cost(), policies.get_placement(), kNoFilter);
+  return run_edge_collapse(mesh, settings, policies.get_cost(), policies.get_placement(),
+                           kNoFilter);
 }
 
 Simplify_outcome run_lindstrom_turk(Mesh& mesh, const Simplify_settings& settings) {
@@ -29,9 +31,13 @@ Simplify_outcome run_lindstrom_turk(Mesh& mesh, const Simplify_settings& setting
 
 std::vector<Policy_entry> cgal_baseline_policies() {
   return {
-      {"gh", "CGAL GarlandHeckbert_plane_policies (classic QEM)", {},
+      {"gh",
+       "CGAL GarlandHeckbert_plane_policies (classic QEM)",
+       {},
        run_garland_heckbert<SMS::GarlandHeckbert_plane_policies<Mesh, Kernel>>},
-      {"gh-prob", "CGAL GarlandHeckbert_probabilistic_plane_policies", {},
+      {"gh-prob",
+       "CGAL GarlandHeckbert_probabilistic_plane_policies",
+       {},
        run_garland_heckbert<SMS::GarlandHeckbert_probabilistic_plane_policies<Mesh, Kernel>>},
       {"lt", "CGAL LindstromTurk_cost and LindstromTurk_placement", {}, run_lindstrom_turk},
   };

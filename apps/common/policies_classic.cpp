@@ -12,8 +12,9 @@ Simplify_outcome run_classic(Mesh& mesh, const Simplify_settings& settings) {
       mesh, settings.options.at("border-weight"),
       settings.options.at("area-weights") != 0 ? cgal_policies::Face_weighting::area
                                                : cgal_policies::Face_weighting::unit);
-  return run_edge_collapse(mesh, settings, policies.get_cost(), policies.get_placement(),
-                           cgal_policies::Bounded_normal_angle_filter<>(settings.max_normal_angle_deg));
+  return run_edge_collapse(
+      mesh, settings, policies.get_cost(), policies.get_placement(),
+      cgal_policies::Bounded_normal_angle_filter<>(settings.max_normal_angle_deg));
 }
 
 }  // namespace

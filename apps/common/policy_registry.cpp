@@ -9,7 +9,8 @@ namespace apps {
 const std::vector<Policy_entry>& policy_registry() {
   static const std::vector<Policy_entry> registry = [] {
     std::vector<Policy_entry> all;
-    for (auto&& group : {cgal_baseline_policies(), classic_policies()})
+    for (auto&& group : {cgal_baseline_policies(), classic_policies(), curvature_policies(),
+                         fusion_policies(), fast_policies(), hausdorff_policies()})
       all.insert(all.end(), group.begin(), group.end());
     return all;
   }();

@@ -22,9 +22,13 @@ struct Policy_option {
 
 struct Simplify_settings {
   std::size_t target_faces = 0;
-  double max_normal_angle_deg = 90;     // flip prevention of our own policies (policies.md §0)
-  std::map<std::string, double> options;  // the policy's options, defaults filled in
+  double max_normal_angle_deg = 90;  // flip prevention of our own policies (policies.md §0)
+  double max_error = 0;  // two-sided Hausdorff bound, a fraction of the input's diagonal; 0: none
+  std::map<std::string, double> options;               // the policy's options, defaults filled in
   std::function<void(std::size_t faces)> on_progress;  // called now and then; may be empty
+  // Called after every collapse with the vertex that disappeared and the one that stayed (already
+  // at its new point); may be empty. The viewer records collapse sequences through it.
+  std::function<void(Mesh::Vertex_index removed, Mesh::Vertex_index kept)> on_collapse;
 };
 
 struct Simplify_outcome {

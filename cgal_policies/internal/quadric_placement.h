@@ -34,16 +34,27 @@ inline double squared_distance_to_segment(const Eigen::Vector3d& x, const Eigen:
   return (x - (p0 + t * d)).squaredNorm();
 }
 
+// Whether the smallest eigenvalue of the positive semi-definite matrix a exceeds
+// kMinimumConditioning times its largest. Since smallest >= det / largest^2 and largest <= trace,
+// det / trace^3 above the bound settles it without an eigen-decomposition, which only the nearly
+// singular quadrics of flat or straight regions need.
+inline bool is_well_conditioned(const Eigen::Matrix3d& a) {
+  const double trace = a.trace();
+  if (!(trace > 0)) return false;
+  if (a.determinant() > kMinimumConditioning * trace * trace * trace) return true;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+  eigen.computeDirect(a, Eigen::EigenvaluesOnly);
+  const double largest = eigen.eigenvalues()(2);
+  return largest > 0 && eigen.eigenvalues()(0) > kMinimumConditioning * largest;
+}
+
 inline Quadric_placement optimal_placement(const Quadric& q, const Eigen::Vector3d& p0,
                                            const Eigen::Vector3d& p1) {
   const Eigen::Matrix3d a = q.linear_part();
   const Eigen::Vector3d b = q.offset();
   const Eigen::Vector3d d = p1 - p0;
 
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
-  eigen.computeDirect(a, Eigen::EigenvaluesOnly);
-  const double largest = eigen.eigenvalues()(2);
-  if (largest > 0 && eigen.eigenvalues()(0) > kMinimumConditioning * largest) {
+  if (is_well_conditioned(a)) {
     const Eigen::Vector3d x = a.inverse() * (-b);
     const double limit = kMaximumSolveDistance * kMaximumSolveDistance * d.squaredNorm();
     if (x.allFinite() && squared_distance_to_segment(x, p0, p1) <= limit)

@@ -1,0 +1,46 @@
+// The cases simplify_bench runs: meshes with their targets, as named presets (evaluation.md and the
+// papers' experiments) or given on the command line.
+#ifndef CGAL_POLICIES_APPS_BENCH_BENCH_PRESETS_H
+#define CGAL_POLICIES_APPS_BENCH_BENCH_PRESETS_H
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace apps {
+
+// A target is a fraction of the input's faces or a face count (exactly one of the two is set).
+struct Bench_target {
+  double ratio = 0;
+  std::size_t faces = 0;
+  std::string label;  // where the case comes from, e.g. "seed 004: 4940 faces"; may be empty
+};
+
+struct Bench_mesh {
+  std::string path;
+  std::vector<Bench_target> targets;
+};
+
+struct Bench_preset {
+  std::string name;
+  std::string description;
+  std::vector<Bench_mesh> meshes;  // paths relative to the data folder
+  std::size_t repetitions;
+  std::size_t samples;  // face samples per direction for the error measure
+};
+
+// The presets by name: "standard", "papers", "quick".
+const std::vector<Bench_preset>& bench_presets();
+
+// The preset of that name, or nullptr.
+const Bench_preset* find_bench_preset(const std::string& name);
+
+// The face count a target asks of a mesh with `input_faces` faces, rounded as simplify rounds it.
+std::size_t target_face_count(const Bench_target& target, std::size_t input_faces);
+
+// "10%" or "4940 faces", for tables and progress lines.
+std::string describe_target(const Bench_target& target);
+
+}  // namespace apps
+
+#endif  // CGAL_POLICIES_APPS_BENCH_BENCH_PRESETS_H

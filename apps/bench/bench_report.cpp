@@ -1,0 +1,187 @@
+#include "bench_report.h"
+
+#include "common/Json_object.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <type_traits>
+
+namespace apps {
+namespace {
+
+std::string csv_cell(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+template <typename Value>
+std::string csv_cell(const Value& value) {
+  if constexpr (std::is_same_v<Value, bool>) {
+    return value ? "true" : "false";
+  } else if constexpr (std::is_floating_point_v<Value>) {
+    return std::isfinite(value) ? Json_object::format_number(value) : "";
+  } else {
+    return std::to_string(value);
+  }
+}
+
+std::string format(const char* pattern, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, pattern, value);
+  return text;
+}
+
+std::string percent(double fraction) { return format("%.3g", 100 * fraction); }
+
+std::string seconds_cell(double s) { return format(s < 1 ? "%.4f" : "%.2f", s); }
+
+std::string validity_cell(const Mesh_validity& v) {
+  if (!v.valid) return "INVALID";
+  std::string text = v.closed ? "closed" : std::to_string(v.boundary_edges) + " border edges";
+  if (v.non_manifold_vertices)
+    text += ", " + std::to_string(v.non_manifold_vertices) + " non-manifold vertices";
+  if (v.degenerate_faces) text += ", " + std::to_string(v.degenerate_faces) + " degenerate";
+  return text;
+}
+
+std::string target_cell(const Run_record& r) {
+  return (r.label.empty() ? r.target : r.label + ", " + r.target) + " → " +
+         std::to_string(r.target_faces);
+}
+
+bool reached(const Run_record& r) { return r.output_faces <= r.target_faces; }
+
+// Consecutive runs of one mesh, in the order they ran.
+std::vector<std::vector<const Run_record*>> group_by_mesh(const std::vector<Run_record>& records) {
+  std::vector<std::vector<const Run_record*>> groups;
+  for (const Run_record& r : records) {
+    if (groups.empty() || groups.back().front()->mesh != r.mesh) groups.emplace_back();
+    groups.back().push_back(&r);
+  }
+  return groups;
+}
+
+std::string mesh_table(const std::vector<const Run_record*>& runs) {
+  const Run_record& first = *runs.front();
+  std::string md = "## " + first.mesh + " (" + std::to_string(first.input_faces) + " faces, " +
+                   std::to_string(first.input_vertices) + " vertices)\n\n";
+  md +=
+      "| target → faces | policy | faces | seconds | × gh | faces removed/s | peak MiB (+run) | "
+      "Hausdorff % | mean % (→ / ←) | validity |\n";
+  md += "|---|---|--:|--:|--:|--:|--:|--:|--:|---|\n";
+  bool short_of_target = false;
+  for (const Run_record* r : runs) {
+    short_of_target |= !reached(*r);
+    const double d = r->error.bbox_diagonal > 0 ? r->error.bbox_diagonal : 1;
+    md += "| " + target_cell(*r) + " | " + r->policy + " | " + std::to_string(r->output_faces) +
+          (reached(*r) ? "" : "*") + " | " + seconds_cell(r->seconds) + " | " +
+          (std::isfinite(r->time_vs_gh) ? format("%.3g", r->time_vs_gh) : "–") + " | " +
+          format("%.0f", r->faces_removed_per_second) + " | " + format("%.0f", r->peak_memory_mib) +
+          " (+" + format("%.0f", r->memory_added_mib) + ") | " + percent(r->error.hausdorff / d) +
+          " | " + percent(r->error.mean_a_to_b / d) + " / " + percent(r->error.mean_b_to_a / d) +
+          " | " + validity_cell(r->validity) + " |\n";
+  }
+  if (short_of_target) md += "\n\\* stopped short of the target: no collapse was left.\n";
+  return md + "\n";
+}
+
+// Per mesh, among the policies that reached every target: the lowest mean error (both directions
+// averaged, then averaged over the mesh's targets) and the lowest geometric mean of the time
+// relative to gh (ratios average geometrically).
+std::string summary(const std::vector<std::vector<const Run_record*>>& groups) {
+  std::string md =
+      "## Summary\n\nPer mesh, among the policies that reached every target: the mean error "
+      "averaged over the mesh's targets, the time ratio to gh averaged geometrically.\n\n";
+  for (const auto& runs : groups) {
+    std::vector<std::string> policies;
+    for (const Run_record* r : runs)
+      if (std::find(policies.begin(), policies.end(), r->policy) == policies.end())
+        policies.push_back(r->policy);
+    std::string most_accurate, fastest;
+    double best_error = INFINITY, best_time = INFINITY;
+    for (const std::string& policy : policies) {
+      double error_sum = 0, log_time = 0;
+      std::size_t n = 0;
+      bool eligible = true;
+      for (const Run_record* r : runs) {
+        if (r->policy != policy) continue;
+        eligible &= reached(*r) && std::isfinite(r->time_vs_gh);
+        error_sum += mean_error_rel(*r);
+        log_time += std::log(std::max(r->time_vs_gh, 1e-12));
+        ++n;
+      }
+      if (!eligible) continue;
+      const double error = error_sum / double(n), time = std::exp(log_time / double(n));
+      if (error < best_error) {
+        best_error = error;
+        most_accurate = policy;
+      }
+      if (time < best_time) {
+        best_time = time;
+        fastest = policy;
+      }
+    }
+    md += "- " + runs.front()->mesh + ": ";
+    md += most_accurate.empty()
+              ? "no policy reached every target.\n"
+              : "lowest mean error: " + most_accurate + " (" + percent(best_error) +
+                    "% of the diagonal); fastest: " + fastest + " (" + format("%.3g", best_time) +
+                    " × gh).\n";
+  }
+  return md;
+}
+
+}  // namespace
+
+std::string runs_csv(const std::vector<Run_record>& records) {
+  std::string header, body;
+  if (!records.empty())
+    for_each_field(records.front(), [&](const char* name, const auto&) {
+      header += (header.empty() ? "" : ",") + std::string(name);
+    });
+  for (const Run_record& r : records) {
+    std::string line;
+    bool first = true;
+    for_each_field(r, [&](const char*, const auto& value) {
+      line += (first ? "" : ",") + csv_cell(value);
+      first = false;
+    });
+    body += line + "\n";
+  }
+  return header + "\n" + body;
+}
+
+std::string runs_json(const std::vector<Run_record>& records, const std::string& command) {
+  Json_object head;
+  head.add("command", command);
+  std::string text = head.str();
+  text.pop_back();  // the closing brace: the runs follow
+  text += ", \"runs\": [";
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    Json_object run;
+    for_each_field(records[i], [&](const char* name, const auto& value) { run.add(name, value); });
+    text += (i ? ",\n  " : "\n  ") + run.str();
+  }
+  return text + "\n]}\n";
+}
+
+std::string markdown_report(const std::vector<Run_record>& records, const std::string& command,
+                            const Bench_plan& plan) {
+  std::string md = "# simplify_bench\n\n`" + command + "`\n\n";
+  md += "Seconds: the simplification alone, the fastest of " + std::to_string(plan.repetitions) +
+        " repetition(s); × gh: that time over gh's on the same mesh and target. Errors: "
+        "two-sided, " +
+        std::to_string(plan.samples) +
+        " face samples per direction, in % of the input's bounding-box diagonal; mean → is "
+        "input to result, ← result to input. Peak MiB: the process's resident peak during the "
+        "run (+ what the run added).\n\n";
+  const auto groups = group_by_mesh(records);
+  for (const auto& runs : groups) md += mesh_table(runs);
+  return md + summary(groups);
+}
+
+}  // namespace apps

@@ -1,0 +1,106 @@
+// Runs the benchmark matrix (meshes x targets x policies x repetitions) in one process: times each
+// simplification alone, measures each result with the evaluator of mesh_error, and reports
+// progress.
+#ifndef CGAL_POLICIES_APPS_BENCH_BENCH_RUNNER_H
+#define CGAL_POLICIES_APPS_BENCH_BENCH_RUNNER_H
+
+#include "bench_presets.h"
+#include "common/mesh_measures.h"
+#include "common/policy_registry.h"
+
+#include <cstddef>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace apps {
+
+struct Run_record;
+
+struct Bench_plan {
+  std::vector<Bench_mesh> meshes;         // paths as given to the reader
+  std::vector<Policy_entry> policies;     // "gh" among them: the reference of every time ratio
+  std::map<std::string, double> options;  // option values given on the command line
+  std::size_t repetitions = 1;
+  std::size_t samples = kDefaultErrorSamples;
+  // Called after each mesh with every record so far, to keep partial results of long runs.
+  std::function<void(const std::vector<Run_record>&)> on_mesh_done;
+};
+
+// One policy on one mesh and target: the result of the first repetition, the times of all.
+struct Run_record {
+  std::string mesh;  // file name
+  std::size_t input_faces = 0, input_vertices = 0;
+  std::string target;  // describe_target()
+  std::string label;
+  double target_ratio = 0;  // 0 when the target is a face count
+  std::size_t target_faces = 0;
+  std::string policy;
+  std::size_t repetitions = 0;
+  std::size_t output_faces = 0, output_vertices = 0;
+  std::string stop_reason;
+  double seconds = 0;  // the fastest repetition
+  double seconds_median = 0;
+  double time_vs_gh = 0;  // seconds / gh's seconds on the same mesh and target
+  double faces_removed_per_second = 0;
+  double peak_memory_mib = 0;   // during the simplification (the largest over the repetitions)
+  double memory_added_mib = 0;  // that peak minus the resident size just before the run
+  Mesh_error error;
+  Mesh_validity validity;
+};
+
+// Calls visit(name, value) for every field of a record, in the order of the CSV columns; the
+// error and validity fields carry the names of mesh_error --json.
+template <typename Visitor>
+void for_each_field(const Run_record& r, Visitor&& visit) {
+  const double d = r.error.bbox_diagonal > 0 ? r.error.bbox_diagonal : 1;
+  visit("mesh", r.mesh);
+  visit("input_faces", r.input_faces);
+  visit("input_vertices", r.input_vertices);
+  visit("target", r.target);
+  visit("label", r.label);
+  visit("target_ratio", r.target_ratio);
+  visit("target_faces", r.target_faces);
+  visit("policy", r.policy);
+  visit("repetitions", r.repetitions);
+  visit("output_faces", r.output_faces);
+  visit("output_vertices", r.output_vertices);
+  visit("stop_reason", r.stop_reason);
+  visit("seconds", r.seconds);
+  visit("seconds_median", r.seconds_median);
+  visit("time_vs_gh", r.time_vs_gh);
+  visit("faces_removed_per_second", r.faces_removed_per_second);
+  visit("peak_memory_mib", r.peak_memory_mib);
+  visit("memory_added_mib", r.memory_added_mib);
+  visit("bbox_diagonal", r.error.bbox_diagonal);
+  visit("hausdorff", r.error.hausdorff);
+  visit("hausdorff_a_to_b", r.error.hausdorff_a_to_b);
+  visit("hausdorff_b_to_a", r.error.hausdorff_b_to_a);
+  visit("mean_a_to_b", r.error.mean_a_to_b);
+  visit("mean_b_to_a", r.error.mean_b_to_a);
+  visit("rms", r.error.rms);
+  visit("hausdorff_rel", r.error.hausdorff / d);
+  visit("mean_a_to_b_rel", r.error.mean_a_to_b / d);
+  visit("mean_b_to_a_rel", r.error.mean_b_to_a / d);
+  visit("rms_rel", r.error.rms / d);
+  visit("samples", r.error.samples);
+  visit("valid", r.validity.valid);
+  visit("closed", r.validity.closed);
+  visit("boundary_edges", r.validity.boundary_edges);
+  visit("non_manifold_vertices", r.validity.non_manifold_vertices);
+  visit("degenerate_faces", r.validity.degenerate_faces);
+  visit("min_angle_deg", r.validity.min_angle_deg);
+  visit("euler_characteristic", r.validity.euler_characteristic);
+}
+
+// The mean error of a record in both directions, averaged, relative to the diagonal: the figure the
+// tables and the summary rank policies by.
+double mean_error_rel(const Run_record& r);
+
+// Runs the plan, printing progress on stderr. Meshes that cannot be read throw App_error.
+std::vector<Run_record> run_bench(const Bench_plan& plan);
+
+}  // namespace apps
+
+#endif  // CGAL_POLICIES_APPS_BENCH_BENCH_RUNNER_H

@@ -1,0 +1,214 @@
+// simplify_bench: every policy of the registry and its peers on a matrix of meshes and targets, in
+// one process, with the evaluator of mesh_error (issue 7, evaluation.md). Prints the Markdown
+// report; --out DIR also writes runs.csv, runs.json, report.md and the plots.
+#include "bench/bench_peers.h"
+#include "bench/bench_plots.h"
+#include "bench/bench_presets.h"
+#include "bench/bench_report.h"
+#include "bench/bench_runner.h"
+#include "common/App_error.h"
+#include "common/Command_line.h"
+#include "common/app_main.h"
+#include "common/policy_registry.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+namespace fs = std::filesystem;
+
+namespace apps {
+namespace {
+
+std::vector<Policy_entry> all_policies() {
+  std::vector<Policy_entry> all = policy_registry();
+  const std::vector<Policy_entry> peers = bench_peers();
+  all.insert(all.end(), peers.begin(), peers.end());
+  return all;
+}
+
+std::string names(const std::vector<Policy_entry>& policies) {
+  std::string text;
+  for (const Policy_entry& p : policies) text += (text.empty() ? "" : ",") + p.name;
+  return text;
+}
+
+void print_help() {
+  std::cout << "usage: simplify_bench (--preset NAME | --mesh FILE...) [options]\n"
+               "Runs every policy (and the peers built in) on meshes and targets, times the\n"
+               "simplification alone, measures each result with the two-sided error of\n"
+               "mesh_error, and prints a Markdown report.\n\n"
+               "  --preset NAME        ";
+  for (const Bench_preset& p : bench_presets())
+    std::cout << (&p == &bench_presets().front() ? "" : "                       ") << p.name << ": "
+              << p.description << " (" << p.repetitions << " repetitions)\n";
+  std::cout << "  --data DIR           where the presets' meshes are (default ../shared/data)\n"
+               "  --mesh FILE          a mesh of your own; repeat for several\n"
+               "  --ratios A,B         targets as fractions of the faces kept (default 0.1)\n"
+               "  --faces N,M          targets as face counts\n"
+               "  --policies P,Q       which policies (default all; gh is always run, as the\n"
+               "                       reference of the time ratios): "
+            << names(all_policies())
+            << "\n"
+               "  --repetitions N      runs per case; the fastest counts (default: the preset's, "
+               "else 3)\n"
+               "  --samples N          face samples per direction of the error measure\n"
+               "  --out DIR            also write runs.csv, runs.json, report.md and PNG plots\n"
+               "  --OPTION X           a policy option, for every policy that has it (simplify "
+               "--help)\n"
+               "  --help               this text\n";
+  for (const Policy_entry& p : bench_peers())
+    std::cout << "  peer " << p.name << ": " << p.summary << '\n';
+}
+
+std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> items;
+  std::string item;
+  for (char c : text + ",") {
+    if (c != ',') {
+      item += c;
+    } else if (!item.empty()) {
+      items.push_back(item);
+      item.clear();
+    }
+  }
+  return items;
+}
+
+std::size_t positive_count(const std::optional<double>& value, const std::string& option) {
+  if (value && !(*value >= 1 && *value == std::floor(*value)))
+    throw App_error(exit_usage, option + " must be a whole number of at least 1");
+  return value ? std::size_t(*value) : 0;
+}
+
+std::vector<Bench_target> ad_hoc_targets(const std::optional<std::string>& ratios,
+                                         const std::optional<std::string>& faces) {
+  std::vector<Bench_target> targets;
+  for (const std::string& r : split_list(ratios.value_or(faces ? "" : "0.1"))) {
+    const double ratio = parse_number(r, "--ratios");
+    if (!(ratio > 0 && ratio <= 1)) throw App_error(exit_usage, "--ratios: each must be in (0, 1]");
+    targets.push_back({ratio, 0, ""});
+  }
+  for (const std::string& f : split_list(faces.value_or("")))
+    targets.push_back({0, positive_count(parse_number(f, "--faces"), "--faces"), ""});
+  return targets;
+}
+
+// The policies named, in that order, with gh added first when missing.
+std::vector<Policy_entry> select_policies(const std::optional<std::string>& list) {
+  const std::vector<Policy_entry> all = all_policies();
+  if (!list) return all;
+  std::vector<Policy_entry> chosen;
+  for (const std::string& name : split_list(*list)) {
+    const auto it =
+        std::find_if(all.begin(), all.end(), [&](const Policy_entry& p) { return p.name == name; });
+    if (it == all.end())
+      throw App_error(exit_usage, "unknown policy '" + name + "' (" + names(all) + ")");
+    if (std::none_of(chosen.begin(), chosen.end(),
+                     [&](const Policy_entry& p) { return p.name == name; }))
+      chosen.push_back(*it);
+  }
+  if (std::none_of(chosen.begin(), chosen.end(),
+                   [](const Policy_entry& p) { return p.name == "gh"; }))
+    chosen.insert(chosen.begin(), *std::find_if(all.begin(), all.end(), [](const Policy_entry& p) {
+                    return p.name == "gh";
+                  }));
+  return chosen;
+}
+
+std::string command_text(int argc, char** argv) {
+  std::string text = fs::path(argv[0]).filename().string();
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    text += " " + (arg.find(' ') == std::string::npos ? arg : "'" + arg + "'");
+  }
+  return text;
+}
+
+void write_file(const fs::path& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  if (!out.flush()) throw App_error(exit_bad_output, path.string() + ": cannot write");
+}
+
+int run(int argc, char** argv) {
+  Command_line cli(argc, argv);
+  if (cli.take_flag("help", "-h")) {
+    print_help();
+    return exit_success;
+  }
+  const std::optional<std::string> preset_name = cli.take_value("preset");
+  const std::string data = cli.take_value("data").value_or("../shared/data");
+  std::vector<std::string> mesh_files;
+  while (const auto mesh = cli.take_value("mesh")) mesh_files.push_back(*mesh);
+  const std::optional<std::string> ratios = cli.take_value("ratios"),
+                                   faces = cli.take_value("faces");
+  const std::optional<std::string> policy_list = cli.take_value("policies");
+  const std::size_t repetitions = positive_count(cli.take_number("repetitions"), "--repetitions");
+  const std::size_t samples = positive_count(cli.take_number("samples"), "--samples");
+  const std::optional<std::string> out = cli.take_value("out");
+
+  Bench_plan plan;
+  plan.policies = select_policies(policy_list);
+  for (const Policy_entry& p : plan.policies)
+    for (const Policy_option& o : p.options) {
+      if (o.is_flag && cli.take_flag(o.name)) plan.options[o.name] = 1;
+      if (!o.is_flag)
+        if (const auto value = cli.take_number(o.name)) plan.options[o.name] = *value;
+    }
+  if (!cli.positionals().empty())
+    throw App_error(exit_usage, "unexpected argument '" + cli.positionals().front() + "'");
+
+  if (preset_name) {
+    const Bench_preset* preset = find_bench_preset(*preset_name);
+    if (!preset) throw App_error(exit_usage, "unknown preset '" + *preset_name + "'");
+    if (!mesh_files.empty() || ratios || faces)
+      throw App_error(exit_usage,
+                      "--preset takes its own meshes and targets: no --mesh, --ratios "
+                      "or --faces with it");
+    for (Bench_mesh m : preset->meshes) {
+      m.path = (fs::path(data) / m.path).string();
+      plan.meshes.push_back(std::move(m));
+    }
+    plan.repetitions = repetitions ? repetitions : preset->repetitions;
+    plan.samples = samples ? samples : preset->samples;
+  } else {
+    if (mesh_files.empty()) throw App_error(exit_usage, "give --preset or --mesh (see --help)");
+    const std::vector<Bench_target> targets = ad_hoc_targets(ratios, faces);
+    for (const std::string& file : mesh_files) plan.meshes.push_back({file, targets});
+    plan.repetitions = repetitions ? repetitions : 3;
+    plan.samples = samples ? samples : kDefaultErrorSamples;
+  }
+  // Fail before hours of work, not after.
+  for (const Bench_mesh& m : plan.meshes)
+    if (!fs::is_regular_file(m.path))
+      throw App_error(exit_bad_input, m.path + ": cannot open: no such file");
+  if (out) {
+    std::error_code ec;
+    fs::create_directories(*out, ec);
+    if (!fs::is_directory(*out))
+      throw App_error(exit_bad_output, *out + ": cannot create the folder");
+  }
+
+  const std::string command = command_text(argc, argv);
+  // The files are rewritten after each mesh, so that a long run interrupted keeps its results.
+  const auto write_reports = [&](const std::vector<Run_record>& records) {
+    const fs::path folder(*out);
+    write_file(folder / "runs.csv", runs_csv(records));
+    write_file(folder / "runs.json", runs_json(records, command));
+    write_file(folder / "report.md", markdown_report(records, command, plan));
+  };
+  if (out) plan.on_mesh_done = write_reports;
+  const std::vector<Run_record> records = run_bench(plan);
+  std::cout << markdown_report(records, command, plan) << std::flush;
+  if (out) draw_plots(records, *out);
+  return exit_success;
+}
+
+}  // namespace
+}  // namespace apps
+
+int main(int argc, char** argv) {
+  return apps::guarded_main("simplify_bench", [&] { return apps::run(argc, argv); });
+}

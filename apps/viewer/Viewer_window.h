@@ -1,0 +1,30 @@
+// The interactive mesh_viewer: a GLFW window with the original and the simplified mesh side by
+// side (Scene_renderer.h) and a Dear ImGui panel (policy, its options, the target face count,
+// shading, wireframe, error heat map, live figures). Each policy's collapses are recorded once in
+// the background (collapse_recorder.h), so the target slider replays them at once.
+#ifndef CGAL_POLICIES_APPS_VIEWER_VIEWER_WINDOW_H
+#define CGAL_POLICIES_APPS_VIEWER_VIEWER_WINDOW_H
+
+#include "Scene_renderer.h"
+#include "common/policy_registry.h"
+
+#include <cstddef>
+#include <string>
+
+namespace apps {
+
+struct Viewer_start {
+  std::string title;  // shown in the window's title and the panel
+  const Policy_entry* policy = nullptr;
+  Simplify_settings settings;  // the policy's options
+  double ratio = 0.1;          // initial target, as a fraction of the input's faces
+  View_options view;
+  bool heat_map = false;
+};
+
+// Returns once the window is closed; throws std::runtime_error when no window can be opened.
+void run_viewer_window(const Mesh& mesh, const Viewer_start& start);
+
+}  // namespace apps
+
+#endif  // CGAL_POLICIES_APPS_VIEWER_VIEWER_WINDOW_H

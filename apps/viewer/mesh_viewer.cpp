@@ -1,0 +1,100 @@
+// mesh_viewer MESH: the original and the simplified mesh side by side, re-simplified in real time
+// as a slider moves (DESIGN.md, "Anyone looks"; the 2014 report's preview). With --snapshot, the
+// same picture is rendered without a window and written as a PNG.
+#include "Viewer_window.h"
+#include "common/App_error.h"
+#include "common/Command_line.h"
+#include "common/app_main.h"
+#include "common/mesh_io.h"
+#include "common/policy_command_line.h"
+#include "snapshot.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+namespace apps {
+namespace {
+
+void print_help() {
+  std::cout
+      << "usage: mesh_viewer MESH [options]\n"
+         "Shows MESH (.off .obj .ply .stl) and its simplification side by side: drag to orbit,\n"
+         "right-drag or shift-drag to pan, wheel to zoom; the panel picks the policy, its options\n"
+         "and the target face count.\n\n"
+         "  --policy NAME         "
+      << policy_names()
+      << " (default classic)\n"
+         "  --ratio R             keep this fraction of the faces, 0 < R <= 1 (default 0.1)\n"
+         "  --max-normal-angle A  as for simplify (default 90)\n"
+         "  --flat                flat shading instead of smooth\n"
+         "  --wireframe           draw the edges\n"
+         "  --heat-map            colour the simplified mesh by its distance to MESH\n"
+         "  --snapshot OUT.png    render the view without a window, write it and exit\n"
+         "  --size WxH            the snapshot's size in pixels (default 1600x800)\n"
+         "  --help                this text\n\n"
+         "Policy options are those of simplify (see simplify --help).\n"
+         "Exit codes: 0 done, 1 not done, 2 bad usage, 3 bad input, 4 output not written.\n";
+}
+
+int write_snapshot_of(const Mesh& mesh, const Policy_choice& choice, double ratio,
+                      Snapshot_settings snapshot, const std::string& png) {
+  Simplify_settings settings = choice.settings;
+  settings.target_faces = std::size_t(std::llround(ratio * double(mesh.number_of_faces())));
+  Mesh simplified = mesh;
+  const Simplify_outcome outcome = choice.policy->run(simplified, settings);
+  simplified.collect_garbage();
+  caption_snapshot(mesh, simplified, choice.policy->name, snapshot);
+  write_snapshot(mesh, simplified, snapshot, png);
+  std::printf("%s: %zu -> %zu faces in %.3f s (%s); wrote %s (%dx%d)\n",
+              choice.policy->name.c_str(), std::size_t(mesh.number_of_faces()),
+              std::size_t(simplified.number_of_faces()), outcome.seconds,
+              outcome.stop_reason.c_str(), png.c_str(), snapshot.width, snapshot.height);
+  return exit_success;
+}
+
+int run(int argc, char** argv) {
+  Command_line cli(argc, argv);
+  if (cli.take_flag("help", "-h")) {
+    print_help();
+    return exit_success;
+  }
+  const Policy_choice choice = take_policy_options(cli, "classic");
+  const double ratio = cli.take_number("ratio").value_or(0.1);
+  if (!(ratio > 0 && ratio <= 1)) throw App_error(exit_usage, "the ratio must be in (0, 1]");
+  const std::optional<std::string> png = cli.take_value("snapshot");
+  const std::optional<std::string> size = cli.take_value("size");
+  Snapshot_settings snapshot;
+  snapshot.view.flat_shading = cli.take_flag("flat");
+  snapshot.view.wireframe = cli.take_flag("wireframe");
+  snapshot.heat_map = cli.take_flag("heat-map");
+  const std::vector<std::string> args = cli.positionals();
+  if (args.size() != 1)
+    throw App_error(exit_usage, "usage: mesh_viewer MESH [options] (see --help)");
+  if (size && !png) throw App_error(exit_usage, "--size goes with --snapshot");
+  if (size) parse_snapshot_size(*size, snapshot);
+  if (png && std::filesystem::path(*png).extension() != ".png")
+    throw App_error(exit_usage, *png + ": the snapshot must be a .png file");
+
+  Mesh mesh = read_triangle_mesh(args[0]);
+  mesh.collect_garbage();
+  if (png) return write_snapshot_of(mesh, choice, ratio, snapshot, *png);
+
+  Viewer_start start;
+  start.title = std::filesystem::path(args[0]).filename().string();
+  start.policy = choice.policy;
+  start.settings = choice.settings;
+  start.ratio = ratio;
+  start.view = snapshot.view;
+  start.heat_map = snapshot.heat_map;
+  run_viewer_window(mesh, start);
+  return exit_success;
+}
+
+}  // namespace
+}  // namespace apps
+
+int main(int argc, char** argv) {
+  return apps::guarded_main("mesh_viewer", [&] { return apps::run(argc, argv); });
+}

@@ -1,0 +1,87 @@
+#include "snapshot.h"
+
+#include "Offscreen_context.h"
+#include "Surface_distance.h"
+#include "common/App_error.h"
+#include "common/mesh_measures.h"
+
+#include <stb_image_write.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+namespace apps {
+
+void parse_snapshot_size(const std::string& text, Snapshot_settings& settings) {
+  int width = 0, height = 0;
+  char rest = 0;
+  if (std::sscanf(text.c_str(), "%dx%d%c", &width, &height, &rest) != 2 || width < 16 ||
+      height < 16 || width > 16384 || height > 16384)
+    throw App_error(exit_usage, "--size: '" + text + "' is not WxH with 16 <= W, H <= 16384");
+  settings.width = width;
+  settings.height = height;
+}
+
+void caption_snapshot(const Mesh& original, const Mesh& simplified, const std::string& policy_name,
+                      Snapshot_settings& settings) {
+  const Mesh_error error = measure_mesh_error(original, simplified, kViewerErrorSamples);
+  char figures[128];
+  std::snprintf(figures, sizeof figures, "\nHausdorff %.3f%%, mean %.3f%% of the diagonal",
+                100 * error.hausdorff / error.bbox_diagonal,
+                100 * error.mean_a_to_b / error.bbox_diagonal);
+  settings.left_caption =
+      mesh_caption("original", original.number_of_faces(), original.number_of_vertices());
+  settings.right_caption =
+      mesh_caption(policy_name, simplified.number_of_faces(), simplified.number_of_vertices()) +
+      figures;
+}
+
+void write_snapshot(const Mesh& original, const Mesh& simplified, const Snapshot_settings& settings,
+                    const std::string& png_path) {
+  Mesh compact = simplified;
+  compact.collect_garbage();
+  const Indexed_mesh left = Indexed_mesh::from_mesh(original);
+  const Indexed_mesh right = Indexed_mesh::from_mesh(compact);
+  const Mesh_frame frame = Mesh_frame::of(left);
+
+  Scene_captions captions;
+  captions.left = settings.left_caption;
+  captions.right = settings.right_caption;
+  std::vector<double> errors;
+  if (settings.heat_map) {
+    std::vector<double> cache;
+    errors = Surface_distance(original).vertex_distances(right, cache);
+    for (double& e : errors) e *= 100 * frame.scale;  // percent of the diagonal
+    captions.legend_max = errors.empty() ? 0 : *std::max_element(errors.begin(), errors.end());
+    captions.legend_unit = "% diag";
+  }
+
+  Offscreen_context context(settings.width, settings.height);
+  const Gl_functions gl(context.loader());
+  std::vector<std::uint8_t> pixels;
+  {
+    Scene_renderer renderer(gl);
+    renderer.set_mesh(Scene_renderer::left, make_render_mesh(left, frame));
+    renderer.set_mesh(Scene_renderer::right,
+                      make_render_mesh(right, frame, errors, captions.legend_max));
+    renderer.draw(settings.width, settings.height, Orbit_camera(), settings.view, captions);
+    gl.Finish();
+    pixels = context.rgb_pixels();
+  }
+
+  const std::string temporary = png_path + ".part";
+  if (!stbi_write_png(temporary.c_str(), settings.width, settings.height, 3, pixels.data(),
+                      settings.width * 3)) {
+    std::remove(temporary.c_str());
+    throw App_error(exit_bad_output, png_path + ": cannot write the PNG");
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, png_path, error);
+  if (error) {
+    std::remove(temporary.c_str());
+    throw App_error(exit_bad_output, png_path + ": " + error.message());
+  }
+}
+
+}  // namespace apps

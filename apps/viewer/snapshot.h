@@ -1,0 +1,39 @@
+// The viewer's side-by-side picture rendered without a window (Offscreen_context.h) and written as
+// a PNG: for `mesh_viewer --snapshot`, and for any app that wants pictures in its reports.
+#ifndef CGAL_POLICIES_APPS_VIEWER_SNAPSHOT_H
+#define CGAL_POLICIES_APPS_VIEWER_SNAPSHOT_H
+
+#include "Scene_renderer.h"
+
+#include <cstddef>
+#include <string>
+
+namespace apps {
+
+struct Snapshot_settings {
+  int width = 1600, height = 800;  // pixels; each mesh gets one half
+  View_options view;
+  bool heat_map = false;  // colour `simplified` by its distance to `original`
+  std::string left_caption, right_caption;
+};
+
+// Face samples per direction for the viewer's error figures: a tenth of the apps' default keeps
+// them interactive (mesh_error gives the reference figures).
+constexpr std::size_t kViewerErrorSamples = 20000;
+
+// Reads --size's "WxH" (16 to 16384 pixels each); App_error(exit_usage) otherwise.
+void parse_snapshot_size(const std::string& text, Snapshot_settings& settings);
+
+// Captions both panes: the face and vertex counts, and under `policy_name` the two-sided error of
+// `simplified` (kViewerErrorSamples samples).
+void caption_snapshot(const Mesh& original, const Mesh& simplified, const std::string& policy_name,
+                      Snapshot_settings& settings);
+
+// Throws App_error(exit_bad_output) when the PNG cannot be written (no partial file is left), and
+// std::runtime_error when no offscreen OpenGL 3.3 context is available.
+void write_snapshot(const Mesh& original, const Mesh& simplified, const Snapshot_settings& settings,
+                    const std::string& png_path);
+
+}  // namespace apps
+
+#endif  // CGAL_POLICIES_APPS_VIEWER_SNAPSHOT_H

@@ -1,0 +1,134 @@
+// Fast_threshold_simplifier: the 2014 report's "improved" quadric simplification (seed 002 §2.2;
+// policies.md §5), made safe. It does not run inside SMS::edge_collapse: the mesh is copied to
+// flat arrays, simplified there, and rebuilt.
+//
+// - Error of an edge: x~^T (Q0 + Q1) x~ at the placement of the QEM tutorial (policies.md §0),
+//   Q_v summing the face planes around v and border planes of weight border_weight. Each
+//   triangle stores the errors of its three edges.
+// - Passes k = 0, 1, ... scan the triangles in order and collapse an edge whose error is below
+//   t_k = 1e-9 (k + 3)^a D^2 (D the bounding-box diagonal, so the schedule is scale-invariant),
+//   at most one collapse per triangle per pass; reference lists are compacted every few passes.
+// - A collapse is refused when it breaks the link condition (which the report's method lacks: a
+//   manifold input gives a manifold output), when it turns a surviving face normal by more than
+//   max_normal_angle_deg or makes a face degenerate, and a border vertex only moves along the
+//   border (an edge from the interior keeps the border end in place).
+// - Lossless mode: only collapses of error zero up to round-off (1e-14 D^2).
+// - Deterministic: the same mesh gives the same result.
+//
+// Works on any `MutableFaceGraph` triangle mesh with an internal vertex point map (e.g.
+// CGAL::Surface_mesh). The mesh is rebuilt: descriptors and user properties are not kept.
+//
+// Parameters:
+//   aggressiveness        a in t_k (default 7; larger is faster and coarser), > 0
+//   lossless              see above (default false)
+//   max_normal_angle_deg  flip bound in degrees (default 90)
+//   border_weight         weight of the border planes (default 1000)
+//
+// Usage:
+//   cgal_policies::Fast_threshold_simplifier simplifier;
+//   const auto report = simplifier(mesh, mesh.number_of_faces() / 100);  // keep 1%
+//   // report.target_reached, report.passes
+#ifndef CGAL_POLICIES_FAST_THRESHOLD_SIMPLIFIER_H
+#define CGAL_POLICIES_FAST_THRESHOLD_SIMPLIFIER_H
+
+#include <cgal_policies/Face_weighting.h>
+#include <cgal_policies/internal/Fast_threshold_engine.h>
+#include <cgal_policies/internal/mesh_geometry.h>
+#include <cgal_policies/internal/plane_quadrics.h>
+
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/properties.h>
+
+#include <array>
+#include <functional>
+#include <stdexcept>
+#include <vector>
+
+namespace cgal_policies {
+
+struct Fast_threshold_report {
+  std::size_t passes = 0;
+  bool target_reached = false;  // false: no allowed collapse was left
+};
+
+class Fast_threshold_simplifier {
+ public:
+  explicit Fast_threshold_simplifier(double aggressiveness = 7, bool lossless = false,
+                                     double max_normal_angle_deg = 90, double border_weight = 1000)
+      : m_border_weight(border_weight) {
+    if (!(aggressiveness > 0)) throw std::invalid_argument("aggressiveness must be positive");
+    m_settings.aggressiveness = aggressiveness;
+    m_settings.lossless = lossless;
+    m_settings.max_normal_angle_deg = max_normal_angle_deg;
+  }
+
+  // Simplifies tm until at most target_faces faces remain, or no allowed collapse is left.
+  // on_progress, when set, receives the face count after each pass.
+  template <typename TriangleMesh>
+  Fast_threshold_report operator()(TriangleMesh& tm, std::size_t target_faces,
+                                   const std::function<void(std::size_t)>& on_progress = {}) const {
+    using Vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+    using Point = typename boost::property_traits<
+        typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type>::value_type;
+    const auto vpm = get(CGAL::vertex_point, tm);
+
+    // To arrays: points, quadrics and border flags per vertex, index triples per face. The
+    // dynamic maps live in this block only, so that they are gone when tm is cleared.
+    std::vector<internal::Fast_threshold_vertex> vertex_data;
+    std::vector<std::array<int, 3>> triangles;
+    Eigen::AlignedBox3d box;
+    {
+      auto quadrics = get(CGAL::dynamic_vertex_property_t<internal::Quadric>(), tm);
+      internal::accumulate_vertex_quadrics(tm, vpm, Face_weighting::unit, m_border_weight, quadrics,
+                                           quadrics);
+      auto index = get(CGAL::dynamic_vertex_property_t<int>(), tm);
+      for (Vertex_descriptor v : vertices(tm)) {
+        put(index, v, int(vertex_data.size()));
+        const Eigen::Vector3d p = internal::to_eigen(get(vpm, v));
+        box.extend(p);
+        vertex_data.push_back({p, get(quadrics, v), bool(is_border(v, tm))});
+      }
+      for (auto f : faces(tm)) {
+        const auto h = halfedge(f, tm);
+        triangles.push_back({get(index, source(h, tm)), get(index, target(h, tm)),
+                             get(index, target(next(h, tm), tm))});
+      }
+    }
+    const double diagonal = vertex_data.empty() ? 0.0 : box.diagonal().norm();
+
+    internal::Fast_threshold_engine engine(std::move(vertex_data), std::move(triangles), diagonal);
+    Fast_threshold_report report;
+    const auto outcome = engine.simplify(target_faces, m_settings, on_progress);
+    report.passes = outcome.passes;
+    report.target_reached = outcome.target_reached;
+
+    // Back to the mesh.
+    std::vector<Eigen::Vector3d> points;
+    engine.extract(points, triangles);
+    CGAL::clear(tm);
+    const auto new_vpm = get(CGAL::vertex_point, tm);
+    std::vector<Vertex_descriptor> new_vertices;
+    new_vertices.reserve(points.size());
+    for (const Eigen::Vector3d& p : points) {
+      new_vertices.push_back(add_vertex(tm));
+      put(new_vpm, new_vertices.back(), internal::to_point<Point>(p));
+    }
+    for (const auto& t : triangles) {
+      const std::array<Vertex_descriptor, 3> face = {new_vertices[t[0]], new_vertices[t[1]],
+                                                     new_vertices[t[2]]};
+      // The link condition makes this impossible for a manifold input.
+      if (CGAL::Euler::add_face(face, tm) == boost::graph_traits<TriangleMesh>::null_face())
+        throw std::logic_error("Fast_threshold_simplifier: a face could not be rebuilt");
+    }
+    return report;
+  }
+
+ private:
+  internal::Fast_threshold_settings m_settings;
+  double m_border_weight;
+};
+
+}  // namespace cgal_policies
+
+#endif  // CGAL_POLICIES_FAST_THRESHOLD_SIMPLIFIER_H

@@ -1,0 +1,111 @@
+// Laplacian_smoother: Laplacian smoothing as a post-process of simplification (Liu et al. 2017,
+// seed 003, §2.4, eq. 8-9; policies.md §3).
+//
+// Each pass moves every interior vertex at once towards the weighted mean U of its neighbours,
+// P <- P + lambda (U - P), with uniform weights or w_i = 1 / |P - p_i| (eq. 8). Border vertices
+// stay fixed. Plain Laplacian smoothing shrinks the shape; Taubin's variant follows each lambda
+// pass with a pass of factor mu < 0 (default -0.53) that inflates it back.
+//
+// An optional predicate allow_move(v, point) vets each move (e.g. Hausdorff_move_guard, which
+// refuses a move that would break a two-sided distance bound); moves are then made one vertex at a
+// time, in vertex order, towards the targets computed from the positions before the pass.
+//
+// Parameters:
+//   rate     lambda in [0, 1] (default 0.5)
+//   weights  Smoothing_weights::uniform (default) or Smoothing_weights::inverse_distance
+//   method   Smoothing_method::laplacian (default) or Smoothing_method::taubin
+//   mu       Taubin's inflating factor (default -0.53)
+//
+// Usage:
+//   cgal_policies::Laplacian_smoother<Mesh> smoother(0.5,
+//   cgal_policies::Smoothing_weights::uniform,
+//                                                    cgal_policies::Smoothing_method::taubin);
+//   smoother.smooth(mesh, 10);
+#ifndef CGAL_POLICIES_LAPLACIAN_SMOOTHER_H
+#define CGAL_POLICIES_LAPLACIAN_SMOOTHER_H
+
+#include <cgal_policies/internal/mesh_geometry.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
+
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace cgal_policies {
+
+enum class Smoothing_weights { uniform, inverse_distance };
+enum class Smoothing_method { laplacian, taubin };
+
+template <typename TriangleMesh>
+class Laplacian_smoother {
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+
+ public:
+  explicit Laplacian_smoother(double rate = 0.5,
+                              Smoothing_weights weights = Smoothing_weights::uniform,
+                              Smoothing_method method = Smoothing_method::laplacian,
+                              double mu = -0.53)
+      : m_rate(rate), m_weights(weights), m_method(method), m_mu(mu) {}
+
+  // Runs `iterations` passes (lambda then mu for Taubin) and returns how many moves allow_move
+  // refused.
+  template <typename AllowMove>
+  std::size_t smooth(TriangleMesh& tm, int iterations, const AllowMove& allow_move) const {
+    std::size_t refused = 0;
+    for (int i = 0; i < iterations; ++i) {
+      refused += pass(tm, m_rate, allow_move);
+      if (m_method == Smoothing_method::taubin) refused += pass(tm, m_mu, allow_move);
+    }
+    return refused;
+  }
+
+  void smooth(TriangleMesh& tm, int iterations) const {
+    smooth(tm, iterations, [](vertex_descriptor, const auto&) { return true; });
+  }
+
+ private:
+  template <typename AllowMove>
+  std::size_t pass(TriangleMesh& tm, double factor, const AllowMove& allow_move) const {
+    const auto vpm = get(CGAL::vertex_point, tm);
+    using Point = typename boost::property_traits<decltype(vpm)>::value_type;
+    std::vector<std::pair<vertex_descriptor, Eigen::Vector3d>> targets;
+    for (vertex_descriptor v : vertices(tm)) {
+      if (halfedge(v, tm) == boost::graph_traits<TriangleMesh>::null_halfedge() ||
+          CGAL::is_border(v, tm))
+        continue;
+      const Eigen::Vector3d p = internal::to_eigen(get(vpm, v));
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      double total = 0;
+      for (vertex_descriptor w : CGAL::vertices_around_target(halfedge(v, tm), tm)) {
+        const Eigen::Vector3d q = internal::to_eigen(get(vpm, w));
+        const double length = (q - p).norm();
+        if (m_weights == Smoothing_weights::inverse_distance && !(length > 0)) continue;
+        const double weight = m_weights == Smoothing_weights::uniform ? 1.0 : 1.0 / length;
+        sum += weight * q;
+        total += weight;
+      }
+      if (total > 0) targets.emplace_back(v, p + factor * (sum / total - p));
+    }
+    std::size_t refused = 0;
+    for (const auto& [v, target] : targets) {
+      const Point point = internal::to_point<Point>(target);
+      if (allow_move(v, point))
+        put(vpm, v, point);
+      else
+        ++refused;
+    }
+    return refused;
+  }
+
+  double m_rate;
+  Smoothing_weights m_weights;
+  Smoothing_method m_method;
+  double m_mu;
+};
+
+}  // namespace cgal_policies
+
+#endif  // CGAL_POLICIES_LAPLACIAN_SMOOTHER_H

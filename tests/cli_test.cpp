@@ -1,0 +1,190 @@
+// The apps from the outside: exit codes, one error line naming the file, no partial output, the
+// input never overwritten (DESIGN.md "Interfaces that others rely on").
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Command_result {
+  int exit_code;
+  std::string out, err;
+};
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+class Cli : public testing::Test {
+ protected:
+  void SetUp() override {
+    m_dir = fs::path(testing::TempDir()) /
+            ("cli_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(m_dir);
+    fs::create_directories(m_dir);
+  }
+  void TearDown() override { fs::remove_all(m_dir); }
+
+  fs::path file(const std::string& name) const { return m_dir / name; }
+
+  fs::path write(const std::string& name, const std::string& contents) const {
+    std::ofstream(file(name), std::ios::binary) << contents;
+    return file(name);
+  }
+
+  Command_result run(const std::string& app, const std::string& args) const {
+    const std::string command = std::string(CGAL_POLICIES_BIN_DIR) + "/" + app + " " + args + " >" +
+                                file("stdout").string() + " 2>" + file("stderr").string();
+    const int status = std::system(command.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(file("stdout")),
+            read_text(file("stderr"))};
+  }
+
+  // A failure: the expected code, exactly one line on stderr naming `path`, and no output file.
+  void expect_failure(const std::string& args, int code, const fs::path& named,
+                      const fs::path& output) const {
+    const Command_result r = run("simplify", args);
+    EXPECT_EQ(r.exit_code, code) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(named.string()), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(output));
+    for (const auto& entry : fs::directory_iterator(m_dir))
+      EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos)
+          << "temporary file left behind: " << entry.path();
+  }
+
+  fs::path m_dir;
+};
+
+const char* const kTetrahedronOff =
+    "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+    "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+
+TEST_F(Cli, SimplifiesATinyMeshAndReportsJson) {
+  const fs::path in = write("tet.off", kTetrahedronOff), out = file("out.obj");
+  const Command_result r = run("simplify", in.string() + " " + out.string() + " 1 --json --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(out));
+  for (const char* field : {"\"policy\": \"classic\"", "\"input_faces\": 4", "\"output_faces\": 4",
+                            "\"output_vertices\": 4", "\"seconds\": ", "\"stop_reason\": "})
+    EXPECT_NE(r.out.find(field), std::string::npos) << field << " missing in " << r.out;
+}
+
+TEST_F(Cli, AnEmptyFileIsBadInput) {
+  const fs::path in = write("empty.off", ""), out = file("out.off");
+  expect_failure(in.string() + " " + out.string() + " 0.5", 3, in, out);
+}
+
+TEST_F(Cli, RandomBytesAreBadInput) {
+  std::string noise;
+  unsigned state = 12345;
+  for (int i = 0; i < 4096; ++i) noise += char((state = state * 1103515245u + 12345u) >> 16);
+  for (const char* name : {"noise.ply", "noise.off", "noise.obj", "noise.stl"}) {
+    const fs::path in = write(name, noise), out = file("out.off");
+    expect_failure(in.string() + " " + out.string() + " 0.5", 3, in, out);
+  }
+}
+
+TEST_F(Cli, ATruncatedBinaryPlyIsBadInput) {
+  std::string ply =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float "
+      "y\nproperty float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n";
+  const float points[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+  ply.append(reinterpret_cast<const char*>(points), sizeof points);
+  const int faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  for (const auto& f : faces) {
+    ply += char(3);
+    ply.append(reinterpret_cast<const char*>(f), sizeof f);
+  }
+  const fs::path whole = write("whole.ply", ply), out = file("out.off");
+  ASSERT_EQ(run("simplify", whole.string() + " " + out.string() + " 1 --quiet").exit_code, 0);
+  fs::remove(out);
+  const fs::path in = write("truncated.ply", ply.substr(0, ply.size() - 20));
+  expect_failure(in.string() + " " + out.string() + " 0.5", 3, in, out);
+}
+
+TEST_F(Cli, NonFiniteCoordinatesAreBadInput) {
+  const fs::path in = write("nan.off", "OFF\n3 1 0\n0 0 0\n1 0 0\nnan 1 0\n3 0 1 2\n");
+  const fs::path out = file("out.off");
+  expect_failure(in.string() + " " + out.string() + " 0.5", 3, in, out);
+  const fs::path inf = write("inf.obj", "v 0 0 0\nv 1 0 0\nv inf 1 0\nf 1 2 3\n");
+  expect_failure(inf.string() + " " + out.string() + " 0.5", 3, inf, out);
+}
+
+TEST_F(Cli, AnOutOfRangeFaceIndexIsBadInput) {
+  const fs::path in = write("range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+  const fs::path out = file("out.off");
+  expect_failure(in.string() + " " + out.string() + " 0.5", 3, in, out);
+}
+
+TEST_F(Cli, AMissingFileIsBadInput) {
+  const fs::path in = file("missing.obj"), out = file("out.off");
+  expect_failure(in.string() + " " + out.string() + " 0.5", 3, in, out);
+}
+
+TEST_F(Cli, AnUnwritableOutputFolderFailsWithCodeFourAndNoFile) {
+  const fs::path in = write("tet.off", kTetrahedronOff);
+  const fs::path out = file("no_such_folder") / "out.off";
+  expect_failure(in.string() + " " + out.string() + " 1", 4, out, out);
+}
+
+TEST_F(Cli, TheInputIsNeverOverwrittenWithoutForce) {
+  const fs::path in = write("tet.off", kTetrahedronOff);
+  const Command_result r = run("simplify", in.string() + " " + in.string() + " 1");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(read_text(in), kTetrahedronOff);
+  EXPECT_EQ(run("simplify", in.string() + " " + in.string() + " 1 --force --quiet").exit_code, 0);
+}
+
+TEST_F(Cli, BadUsageGivesCodeTwo) {
+  const fs::path in = write("tet.off", kTetrahedronOff), out = file("out.off");
+  for (const std::string& args :
+       {in.string() + " " + out.string() + " 1.5", in.string() + " " + out.string(),
+        in.string() + " " + out.string() + " 0.5 --policy nonsense",
+        in.string() + " " + out.string() + " 0.5 --no-such-option",
+        in.string() + " " + file("out.xyz").string() + " 0.5"}) {
+    const Command_result r = run("simplify", args);
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+}
+
+TEST_F(Cli, MeshErrorBetweenAFileAndItselfIsZero) {
+  const fs::path in = write("tet.off", kTetrahedronOff);
+  const Command_result r =
+      run("mesh_error", in.string() + " " + in.string() + " --json --samples 1000");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"hausdorff\": 0,"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"valid\": true"), std::string::npos) << r.out;
+  EXPECT_EQ(run("mesh_error", in.string() + " " + file("missing.off").string()).exit_code, 3);
+}
+
+TEST_F(Cli, TheBunnyAtTenPercentWithGhReachesItsTarget) {
+  SKIP_WITHOUT_SHARED_DATA();
+  const fs::path out = file("bunny.ply");
+  const Command_result r =
+      run("simplify", test_meshes::shared_data("bunny.obj") + " " + out.string() +
+                          " 0.1 --policy gh --json --measure --samples 20000");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::smatch faces;
+  ASSERT_TRUE(std::regex_search(r.out, faces, std::regex("\"output_faces\": ([0-9]+)")));
+  EXPECT_NEAR(std::stod(faces[1]), 6945, 69.45);
+  EXPECT_NE(r.out.find("\"valid\": true"), std::string::npos);
+  EXPECT_NE(r.out.find("\"stop_reason\": \"target_reached\""), std::string::npos);
+}
+
+}  // namespace

@@ -1,0 +1,188 @@
+// Hausdorff_bounded_placement, its cost and filter (policies.md §3): exact cases on tiny meshes,
+// and the global-mode guarantee on real meshes, checked by mesh_error's measure.
+#include "common/edge_collapse_runner.h"
+#include "common/mesh_measures.h"
+#include "test_meshes.h"
+
+#include <cgal_policies/Hausdorff_bounded_placement.h>
+#include <cgal_policies/Hausdorff_move_guard.h>
+#include <cgal_policies/Laplacian_smoother.h>
+
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Edge_profile.h>
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace SMS = CGAL::Surface_mesh_simplification;
+using apps::Kernel;
+using apps::Mesh;
+using apps::Point;
+using Placement = cgal_policies::Hausdorff_bounded_placement<Mesh, Kernel>;
+using Profile = SMS::Edge_profile<Mesh>;
+
+cgal_policies::Hausdorff_bounded_options options_with(double beta) {
+  cgal_policies::Hausdorff_bounded_options options;
+  options.beta = beta;
+  return options;
+}
+
+// Asks the policy's filter, as edge_collapse would when it pops the edge of h.
+bool collapse_accepted(Mesh& mesh, const Placement& policy, Mesh::Halfedge_index h) {
+  const Kernel traits;
+  const Profile profile(h, mesh, traits, get(CGAL::vertex_index, mesh),
+                        get(CGAL::vertex_point, mesh), get(CGAL::halfedge_index, mesh), true);
+  return bool(policy.get_filter()(profile, policy.get_placement()(profile)));
+}
+
+void start(Mesh& mesh, const Placement& policy) {
+  policy.get_cost().initialize(mesh, get(CGAL::vertex_point, mesh), Kernel());
+}
+
+Mesh::Halfedge_index halfedge_between(const Mesh& mesh, int a, int b) {
+  const auto h = CGAL::halfedge(Mesh::Vertex_index(a), Mesh::Vertex_index(b), mesh);
+  EXPECT_TRUE(h.second);
+  return h.first;
+}
+
+// The 4 x 4 flat grid with a ridge: the vertices of the middle column x = 2 are raised by
+// `height`. Vertex (i, j) has index 5 j + i.
+Mesh ridge_grid(double height) {
+  Mesh mesh = test_meshes::flat_grid(4);
+  for (auto v : vertices(mesh)) {
+    const Point& p = mesh.point(v);
+    if (p.x() == 2) mesh.point(v) = Point(p.x(), p.y(), height);
+  }
+  return mesh;
+}
+
+void expect_every_interior_collapse_accepted(double beta) {
+  {
+    Mesh mesh = test_meshes::flat_grid(4);
+    const Placement policy(mesh, options_with(beta));
+    start(mesh, policy);
+    int interior = 0;
+    for (auto e : edges(mesh)) {
+      const auto h = halfedge(e, mesh);
+      if (CGAL::is_border(source(h, mesh), mesh) || CGAL::is_border(target(h, mesh), mesh))
+        continue;
+      ++interior;
+      EXPECT_TRUE(collapse_accepted(mesh, policy, h)) << "beta " << beta << " edge " << e;
+    }
+    EXPECT_EQ(interior, 16);  // the 3 x 3 interior vertices: 6 + 6 axis edges, 4 diagonals
+  }
+}
+
+TEST(HausdorffBoundedPlacement, FlatGridAcceptsEveryInteriorCollapse) {
+  expect_every_interior_collapse_accepted(0.5);
+}
+
+// Known issue (issue 5 report): at these tolerances two of the 16 interior collapses are refused.
+TEST(HausdorffBoundedPlacement, DISABLED_FlatGridAcceptsEveryInteriorCollapseAtSmallTolerances) {
+  for (double beta : {0.05, 0.1}) expect_every_interior_collapse_accepted(beta);
+}
+
+TEST(HausdorffBoundedPlacement, BentGridRefusesTheCollapseAcrossTheBendBelowItsHeight) {
+  // The interior edge from (1, 2) up to the ridge vertex (2, 2): whichever point the merged vertex
+  // takes, the bend is cut or the flat part is lifted by a good part of the height.
+  const double height = 0.5;
+  for (const double tolerance : {0.1 * height, 2 * height}) {
+    Mesh mesh = ridge_grid(height);
+    const double diagonal = apps::bbox_diagonal(mesh);
+    const Placement policy(mesh, options_with(tolerance / diagonal));
+    start(mesh, policy);
+    const bool accepted = collapse_accepted(mesh, policy, halfedge_between(mesh, 11, 12));
+    EXPECT_EQ(accepted, tolerance > height) << "tolerance " << tolerance;
+  }
+}
+
+TEST(HausdorffBoundedPlacement, LockedBordersRefuseBorderEdges) {
+  Mesh mesh = test_meshes::flat_grid(4);
+  cgal_policies::Hausdorff_bounded_options options = options_with(0.5);
+  const Placement sliding(mesh, options);
+  start(mesh, sliding);
+  EXPECT_TRUE(collapse_accepted(mesh, sliding, halfedge_between(mesh, 1, 2)));
+  options.border = cgal_policies::Border_rule::lock;
+  const Placement locked(mesh, options);
+  start(mesh, locked);
+  EXPECT_FALSE(collapse_accepted(mesh, locked, halfedge_between(mesh, 1, 2)));
+}
+
+// A finely sampled cylinder arc: collapses in local mode each stay within the tolerance of the
+// patch they replace, but successive ones drift away from the original surface.
+Mesh cylinder_band(int segments) {
+  std::vector<Point> points;
+  std::vector<std::array<int, 3>> triangles;
+  for (int i = 0; i <= segments; ++i) {
+    const double angle = 0.5 * M_PI * i / segments;
+    points.emplace_back(std::cos(angle), std::sin(angle), 0);
+    points.emplace_back(std::cos(angle), std::sin(angle), 0.05);
+  }
+  for (int i = 0; i < segments; ++i) {
+    triangles.push_back({2 * i, 2 * i + 2, 2 * i + 3});
+    triangles.push_back({2 * i, 2 * i + 3, 2 * i + 1});
+  }
+  return test_meshes::from_triangles(points, triangles);
+}
+
+apps::Mesh_error simplify_band(cgal_policies::Hausdorff_reference reference, double beta) {
+  Mesh mesh = cylinder_band(64);
+  const Mesh original = mesh;
+  cgal_policies::Hausdorff_bounded_options options = options_with(beta);
+  options.reference = reference;
+  const Placement policy(mesh, options);
+  apps::Simplify_settings settings;
+  settings.target_faces = 2;
+  apps::run_edge_collapse(mesh, settings, policy.get_cost(), policy.get_placement(),
+                          policy.get_filter());
+  mesh.collect_garbage();
+  return apps::measure_mesh_error(original, mesh, 20000);
+}
+
+TEST(HausdorffBoundedPlacement, LocalModeAccumulatesWhileGlobalModeKeepsTheBound) {
+  const double beta = 0.01;
+  const apps::Mesh_error local = simplify_band(cgal_policies::Hausdorff_reference::local, beta);
+  const apps::Mesh_error global = simplify_band(cgal_policies::Hausdorff_reference::global, beta);
+  EXPECT_GT(local.hausdorff, beta * local.bbox_diagonal);
+  EXPECT_LE(global.hausdorff, beta * global.bbox_diagonal);
+}
+
+// The guarantee: in global mode, mesh_error's two-sided Hausdorff distance never exceeds the
+// tolerance, smoothing off and bounded smoothing on. (The registry's "hausdorff" entry runs the
+// same classes; property_test checks it like every policy.)
+TEST(HausdorffBoundedPlacement, GlobalModeKeepsTheTwoSidedBoundOnRealMeshes) {
+  SKIP_WITHOUT_SHARED_DATA();
+  for (const std::string name : {"bunny.obj", "fandisk.obj", "teapot.obj", "rocker-arm.obj"}) {
+    const Mesh original = apps::read_triangle_mesh(test_meshes::shared_data(name));
+    for (const double tolerance : {0.001, 0.005, 0.01}) {
+      for (const bool smooth : {false, true}) {
+        Mesh mesh = original;
+        {
+          const Placement policy(mesh, options_with(tolerance));
+          // Down to 5% of the faces, or as far as the tolerance allows: far enough that the
+          // tighter tolerances stop the run, and short enough for a test.
+          apps::Simplify_settings settings;
+          settings.target_faces = original.number_of_faces() / 20;
+          apps::run_edge_collapse(mesh, settings, policy.get_cost(), policy.get_placement(),
+                                  policy.get_filter());
+        }
+        mesh.collect_garbage();
+        if (smooth) {
+          const cgal_policies::Hausdorff_move_guard<Mesh> guard(original, mesh, tolerance);
+          cgal_policies::Laplacian_smoother<Mesh>().smooth(mesh, 3, guard);
+        }
+        const apps::Mesh_error error = apps::measure_mesh_error(original, mesh);
+        EXPECT_LE(error.hausdorff, tolerance * error.bbox_diagonal)
+            << name << " tolerance " << tolerance << (smooth ? " smoothed" : "") << ": "
+            << mesh.number_of_faces() << " faces, Hausdorff "
+            << error.hausdorff / error.bbox_diagonal;
+        EXPECT_LT(mesh.number_of_faces(), original.number_of_faces());
+      }
+    }
+  }
+}
+
+}  // namespace

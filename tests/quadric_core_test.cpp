@@ -1,0 +1,166 @@
+// The shared quadric core (policies.md §0) and Classic_quadric_policies, on tiny meshes with exact
+// expectations.
+#include "test_meshes.h"
+
+#include <cgal_policies/Classic_quadric_policies.h>
+#include <cgal_policies/internal/plane_quadrics.h>
+#include <cgal_policies/internal/quadric_placement.h>
+
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Count_stop_predicate.h>
+#include <CGAL/Surface_mesh_simplification/edge_collapse.h>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+using namespace test_meshes;
+using cgal_policies::Face_weighting;
+using cgal_policies::internal::optimal_placement;
+using cgal_policies::internal::Placement_branch;
+using cgal_policies::internal::Quadric;
+
+using Quadric_map = Mesh::Property_map<Mesh::Vertex_index, Quadric>;
+
+Quadric_map vertex_quadrics(Mesh& mesh, double border_weight) {
+  Quadric_map q = mesh.add_property_map<Mesh::Vertex_index, Quadric>("v:test_quadric").first;
+  cgal_policies::internal::accumulate_vertex_quadrics(mesh, mesh.points(), Face_weighting::unit,
+                                                      border_weight, q, q);
+  return q;
+}
+
+Mesh::Halfedge_index halfedge_between(const Mesh& mesh, const Point& a, const Point& b) {
+  for (auto h : halfedges(mesh))
+    if (mesh.point(source(h, mesh)) == a && mesh.point(target(h, mesh)) == b) return h;
+  ADD_FAILURE() << "no edge " << a << " -> " << b;
+  return Mesh::null_halfedge();
+}
+
+Eigen::Vector3d eigen(const Point& p) { return {p.x(), p.y(), p.z()}; }
+
+TEST(Quadric, EvaluatesTheWeightedSquaredDistanceToItsPlane) {
+  const Eigen::Vector3d n = Eigen::Vector3d(1, 2, 2) / 3.0;  // unit normal
+  const Quadric q = Quadric::from_plane(n, -1.0, 2.0);       // plane n.x = 1, weight 2
+  EXPECT_DOUBLE_EQ(q.evaluate({3, 0, 0}), 2.0 * 0.0);        // n.(3,0,0) = 1: on the plane
+  EXPECT_DOUBLE_EQ(q.evaluate({0, 0, 0}), 2.0 * 1.0);
+  EXPECT_DOUBLE_EQ(q.evaluate({1, 2, 2}), 2.0 * 4.0);  // n.x = 3
+  EXPECT_DOUBLE_EQ((q + q).evaluate({0, 0, 0}), 4.0);
+  EXPECT_DOUBLE_EQ(q.scaled(0.5).evaluate({0, 0, 0}), 1.0);
+}
+
+TEST(Quadric, AreaWeightingMultipliesByTheFaceArea) {
+  Mesh mesh = from_triangles({{0, 0, 0}, {4, 0, 0}, {0, 3, 0}}, {{0, 1, 2}});
+  const auto f = *faces(mesh).begin();
+  const Quadric unit =
+      cgal_policies::internal::face_plane_quadric(f, mesh, mesh.points(), Face_weighting::unit);
+  const Quadric area =
+      cgal_policies::internal::face_plane_quadric(f, mesh, mesh.points(), Face_weighting::area);
+  EXPECT_DOUBLE_EQ(unit.evaluate({1, 1, 2}), 4.0);
+  EXPECT_DOUBLE_EQ(area.evaluate({1, 1, 2}), 6.0 * 4.0);
+}
+
+TEST(ClassicQuadricPolicies, EveryEdgeOfAFlatGridCostsZero) {
+  Mesh mesh = flat_grid(3);
+  const cgal_policies::Classic_quadric_policies<Mesh, apps::Kernel> policies(mesh);
+  policies.initialize(mesh, mesh.points(), apps::Kernel());
+  for (auto h : halfedges(mesh)) {
+    if (is_border(h, mesh)) continue;
+    const Profile profile = edge_profile(mesh, h);
+    const auto placement = policies.get_placement()(profile);
+    ASSERT_TRUE(placement);
+    EXPECT_EQ(placement->z(), 0.0);
+    const auto cost = policies.get_cost()(profile, placement);
+    ASSERT_TRUE(cost);
+    EXPECT_EQ(*cost, 0.0) << "edge " << profile.p0() << " -> " << profile.p1();
+  }
+}
+
+TEST(PlacementChain, SolvesWhenTheQuadricIsWellConditioned) {
+  // Around an edge of a tetrahedron lie all four face planes (the edge's two faces twice): the
+  // minimiser is a proper point, where the gradient A x + b vanishes, better than any point of
+  // the edge.
+  Mesh mesh = tetrahedron();
+  const Quadric_map q = vertex_quadrics(mesh, 1000);
+  const auto h = *halfedges(mesh).begin();
+  const Eigen::Vector3d p0 = eigen(mesh.point(source(h, mesh))),
+                        p1 = eigen(mesh.point(target(h, mesh)));
+  const Quadric sum = q[source(h, mesh)] + q[target(h, mesh)];
+  const auto choice = optimal_placement(sum, p0, p1);
+  EXPECT_EQ(choice.branch, Placement_branch::solve);
+  EXPECT_NEAR((sum.linear_part() * choice.point + sum.offset()).norm(), 0.0, 1e-12);
+  for (const Eigen::Vector3d& p : {p0, p1, Eigen::Vector3d(0.5 * (p0 + p1))})
+    EXPECT_LT(sum.evaluate(choice.point), sum.evaluate(p));
+}
+
+TEST(PlacementChain, MinimisesAlongTheEdgeWhenThePlanesLeaveADirectionFree) {
+  // A strip across x with profile z = x on [-1, 0], z = 0 on [0, 2], z = 2 - x on [2, 3]: every
+  // normal lies in the xz plane, so A is singular. Along the edge (0,0,0)-(2,0,0) the cost is
+  // x^2/2 + (x - 2)^2/2, smallest at x = 1.
+  Mesh mesh = from_triangles({{-1, 0, -1},
+                              {0, 0, 0},
+                              {2, 0, 0},
+                              {3, 0, -1},
+                              {-1, 1, -1},
+                              {0, 1, 0},
+                              {2, 1, 0},
+                              {3, 1, -1}},
+                             {{0, 1, 5}, {0, 5, 4}, {1, 2, 6}, {1, 6, 5}, {2, 3, 6}, {3, 7, 6}});
+  const Quadric_map q = vertex_quadrics(mesh, 0);  // border planes would pin the ends
+  const auto h = halfedge_between(mesh, {0, 0, 0}, {2, 0, 0});
+  const auto choice =
+      optimal_placement(q[source(h, mesh)] + q[target(h, mesh)], {0, 0, 0}, {2, 0, 0});
+  EXPECT_EQ(choice.branch, Placement_branch::segment);
+  EXPECT_NEAR((choice.point - Eigen::Vector3d(1, 0, 0)).norm(), 0.0, 1e-12);
+}
+
+TEST(PlacementChain, TakesTheBestOfEndsAndMidpointWhenTheEdgeCostsNothingAnywhere) {
+  // Inside a flat grid the quadric is the plane z = 0 alone: no solve, and no change along the
+  // edge.
+  Mesh mesh = flat_grid(3);
+  const Quadric_map q = vertex_quadrics(mesh, 1000);
+  const auto h = halfedge_between(mesh, {1, 1, 0}, {2, 2, 0});
+  const auto choice =
+      optimal_placement(q[source(h, mesh)] + q[target(h, mesh)], {1, 1, 0}, {2, 2, 0});
+  EXPECT_EQ(choice.branch, Placement_branch::best_of_three);
+  EXPECT_EQ(choice.point, Eigen::Vector3d(1, 1, 0));  // ties go to the first end
+}
+
+TEST(PlacementChain, RejectsAMinimiserFarFromTheEdge) {
+  // Two nearly parallel planes meet far away: the well-conditioned test passes but the point is
+  // more than two edge lengths off, so the chain falls back to the segment.
+  const Eigen::Vector3d n1 = Eigen::Vector3d(0, 0.01, 1).normalized();
+  const Eigen::Vector3d n2 = Eigen::Vector3d(0, -0.01, 1).normalized();
+  const Quadric q = Quadric::from_plane(n1, -n1.z() * 0.1, 1) + Quadric::from_plane(n2, 0, 1) +
+                    Quadric::from_plane({1, 0, 0}, 0, 1);
+  const auto choice = optimal_placement(q, {0, 0, 0}, {0, 0.1, 0});
+  EXPECT_NE(choice.branch, Placement_branch::solve);
+  EXPECT_LE(choice.point.norm(), 0.1 + 1e-12);
+}
+
+TEST(BorderPlanes, KeepABorderVertexOnItsBorderLine) {
+  // Collapsing a border vertex into an interior neighbour must not pull it inside.
+  Mesh mesh = flat_grid(2);
+  const Quadric_map q = vertex_quadrics(mesh, 1000);
+  const auto h = halfedge_between(mesh, {1, 0, 0}, {1, 1, 0});
+  const auto choice =
+      optimal_placement(q[source(h, mesh)] + q[target(h, mesh)], {1, 0, 0}, {1, 1, 0});
+  EXPECT_EQ(choice.point, Eigen::Vector3d(1, 0, 0));
+}
+
+TEST(BorderPlanes, ASimplifiedGridKeepsItsOutline) {
+  Mesh mesh = flat_grid(8);
+  const cgal_policies::Classic_quadric_policies<Mesh, apps::Kernel> policies(mesh);
+  CGAL::Surface_mesh_simplification::edge_collapse(
+      mesh, CGAL::Surface_mesh_simplification::Count_stop_predicate<Mesh>(20),
+      CGAL::parameters::get_cost(policies.get_cost()).get_placement(policies.get_placement()));
+  mesh.collect_garbage();
+  ASSERT_LT(mesh.number_of_faces(), 128u);
+  for (auto v : vertices(mesh)) {
+    const Point& p = mesh.point(v);
+    EXPECT_EQ(p.z(), 0.0);
+    if (is_border(v, mesh)) {
+      EXPECT_TRUE(p.x() == 0 || p.x() == 8 || p.y() == 0 || p.y() == 8) << p;
+    }
+  }
+}
+
+}  // namespace

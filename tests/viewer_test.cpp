@@ -1,0 +1,303 @@
+// mesh_viewer: the collapse recording and its replay, the background task, the heat map's pieces,
+// and the headless snapshots (OSMesa: no display needed).
+#include "Collapse_replay.h"
+#include "Latest_task.h"
+#include "Render_mesh.h"
+#include "Scene_renderer.h"
+#include "Surface_distance.h"
+#include "common/policy_registry.h"
+#include "test_meshes.h"
+
+#include <stb_image.h>
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <future>
+#include <memory>
+#include <string>
+#include <thread>
+
+namespace {
+
+using apps::Collapse_history;
+using apps::Collapse_replay;
+using apps::Indexed_mesh;
+using apps::Mesh;
+using apps::Point;
+using Triangle = std::array<Point, 3>;
+
+// The triangles as point triples, each turned to start at its smallest point (orientation kept),
+// sorted: equal lists mean equal meshes up to vertex and face numbering.
+std::vector<Triangle> canonical_triangles(const Indexed_mesh& mesh) {
+  std::vector<Triangle> result;
+  for (const auto& t : mesh.triangles) {
+    Triangle p = {mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]};
+    std::rotate(p.begin(), std::min_element(p.begin(), p.end()), p.end());
+    result.push_back(p);
+  }
+  std::sort(result.begin(), result.end());
+  return result;
+}
+
+Mesh simplified_straight(const Mesh& input, const apps::Policy_entry& policy, std::size_t target) {
+  Mesh mesh = input;
+  policy.run(mesh, apps::default_settings(policy, target));
+  mesh.collect_garbage();
+  return mesh;
+}
+
+Collapse_history record_all(const Mesh& input, const apps::Policy_entry& policy) {
+  return apps::record_collapses(input, policy, apps::default_settings(policy, 0));
+}
+
+// Replays the policy's recorded collapses at each face count in `counts` and compares with
+// simplifying straight there. False when the policy reports no collapse: it simplifies outside
+// the edge-collapse visitor (e.g. the fast threshold engine), and the viewer runs it straight.
+bool replay_equals_straight(const Mesh& input, const apps::Policy_entry& policy,
+                            const std::vector<std::size_t>& counts) {
+  const Collapse_history history = record_all(input, policy);
+  if (history.collapses.empty()) return false;
+  const Collapse_replay replay(input, history);
+  EXPECT_EQ(replay.faces_after(0), input.number_of_faces());
+  EXPECT_EQ(replay.faces_after(replay.steps()), history.final_faces) << policy.name;
+  for (std::size_t target : counts) {
+    const Indexed_mesh replayed = replay.mesh_after(replay.step_for_target(target));
+    const Mesh straight = simplified_straight(input, policy, target);
+    EXPECT_EQ(replayed.triangles.size(), straight.number_of_faces())
+        << policy.name << " " << target;
+    EXPECT_EQ(replayed.vertex_count, straight.number_of_vertices()) << policy.name << " " << target;
+    EXPECT_TRUE(canonical_triangles(replayed) ==
+                canonical_triangles(Indexed_mesh::from_mesh(straight)))
+        << policy.name << " at " << target << " faces";
+  }
+  return true;
+}
+
+// Every policy that reports its collapses replays exactly; CGAL's and the classic one must.
+void expect_every_policy_replays(const Mesh& input, const std::vector<std::size_t>& counts) {
+  std::vector<std::string> replayed;
+  for (const apps::Policy_entry& policy : apps::policy_registry())
+    if (replay_equals_straight(input, policy, counts)) replayed.push_back(policy.name);
+  for (const char* name : {"gh", "gh-prob", "lt", "classic"})
+    EXPECT_EQ(std::count(replayed.begin(), replayed.end(), name), 1) << name;
+}
+
+TEST(Collapse_replay, EveryFaceCountOfTheIcosahedronEqualsStraightSimplification) {
+  const Mesh ico = test_meshes::icosahedron();
+  std::vector<std::size_t> counts;
+  for (std::size_t f = 20; f >= 1; --f) counts.push_back(f);
+  expect_every_policy_replays(ico, counts);
+}
+
+TEST(Collapse_replay, EachCollapseRemovesOneFaceOnTheBorderAndTwoInside) {
+  const Mesh grid = test_meshes::flat_grid(4);  // 32 triangles
+  const Collapse_history history = record_all(grid, *apps::find_policy("classic"));
+  const Collapse_replay replay(grid, history);
+  ASSERT_EQ(replay.steps(), history.collapses.size());
+  for (std::size_t s = 0; s < replay.steps(); ++s) {
+    const std::size_t removed = replay.faces_after(s) - replay.faces_after(s + 1);
+    EXPECT_TRUE(removed == 1 || removed == 2) << "collapse " << s << " removed " << removed;
+    // The replay keeps every vertex index: the removed vertex is no longer used.
+    const Indexed_mesh after = replay.mesh_after(s + 1);
+    const auto gone = std::uint32_t(history.collapses[s].removed);
+    for (const auto& t : after.triangles) EXPECT_EQ(std::count(t.begin(), t.end(), gone), 0);
+    EXPECT_EQ(after.points[std::size_t(history.collapses[s].kept)],
+              history.collapses[s].kept_point);
+  }
+  // No collapse is replayed at step 0: the input itself.
+  EXPECT_TRUE(canonical_triangles(replay.mesh_after(0)) ==
+              canonical_triangles(Indexed_mesh::from_mesh(grid)));
+  EXPECT_EQ(replay.step_for_target(32), 0u);
+  EXPECT_EQ(replay.step_for_target(0), replay.steps());
+}
+
+TEST(Collapse_replay, RealMeshAtSeveralCountsEqualsStraightSimplification) {
+  SKIP_WITHOUT_SHARED_DATA();
+  Mesh fandisk = apps::read_triangle_mesh(test_meshes::shared_data("fandisk.obj"));
+  fandisk.collect_garbage();
+  const std::size_t f = fandisk.number_of_faces();
+  expect_every_policy_replays(fandisk, {f, f - 1, f / 2 + 1, f / 10, f / 100, 4});
+}
+
+TEST(Latest_task, OnlyTheLatestJobHandsBackItsResult) {
+  apps::Latest_task<int> task;
+  std::promise<void> started, release;
+  std::shared_future<void> released = release.get_future().share();
+  task.submit([&started, released] {
+    started.set_value();
+    released.wait();
+    return 1;
+  });
+  started.get_future().wait();
+  task.submit([] { return 2; });
+  task.submit([] { return 3; });  // replaces job 2, which never runs
+  release.set_value();
+  while (task.busy()) std::this_thread::yield();
+  EXPECT_EQ(task.take(), std::optional<int>(3));
+  EXPECT_EQ(task.take(), std::nullopt);  // once
+}
+
+TEST(Latest_task, RethrowsTheJobsError) {
+  apps::Latest_task<int> task;
+  task.submit([]() -> int { throw std::runtime_error("policy failed"); });
+  while (task.busy()) std::this_thread::yield();
+  EXPECT_THROW(task.take(), std::runtime_error);
+}
+
+TEST(Surface_distance, DistancesToAFlatGridAreHeights) {
+  const apps::Surface_distance distance(test_meshes::flat_grid(2));
+  EXPECT_DOUBLE_EQ(distance(Point(1, 1, 0.5)), 0.5);
+  EXPECT_DOUBLE_EQ(distance(Point(3, 1, 0)), 1.0);  // beyond the border x = 2
+
+  // Cached per point version: the second mesh reuses the first one's slot 0.
+  Indexed_mesh lifted = Indexed_mesh::from_mesh(test_meshes::flat_grid(2));
+  for (Point& p : lifted.points) p = Point(p.x(), p.y(), 0.25);
+  std::vector<double> cache;
+  const std::vector<double> d = distance.vertex_distances(lifted, cache);
+  EXPECT_EQ(d, std::vector<double>(9, 0.25));
+  lifted.points[0] = Point(0, 0, 7);  // the same version: the cache answers
+  EXPECT_DOUBLE_EQ(distance.vertex_distances(lifted, cache)[0], 0.25);
+}
+
+TEST(Render_mesh, FrameCentresTheOriginalAtUnitDiagonal) {
+  const Indexed_mesh grid = Indexed_mesh::from_mesh(test_meshes::flat_grid(2));  // [0,2]^2
+  const apps::Mesh_frame frame = apps::Mesh_frame::of(grid);
+  EXPECT_EQ(frame.center, Point(1, 1, 0));
+  EXPECT_DOUBLE_EQ(frame.scale, 1 / std::sqrt(8.0));
+  const apps::Render_mesh render =
+      apps::make_render_mesh(grid, frame, std::vector<double>(9, 1.0), 1.0);
+  ASSERT_EQ(render.vertices.size(), 9u * apps::Render_mesh::kFloatsPerVertex);
+  EXPECT_EQ(render.indices.size(), 8u * 3);
+  // Vertex 0 is (0, 0, 0): at (-1, -1, 0) / sqrt(8), normal +z, red (the top of the heat map).
+  EXPECT_FLOAT_EQ(render.vertices[0], float(-1 / std::sqrt(8.0)));
+  EXPECT_FLOAT_EQ(render.vertices[5], 1.0f);
+  EXPECT_EQ(apps::heat_color(1), apps::heat_color(2));
+  EXPECT_FLOAT_EQ(render.vertices[6], apps::heat_color(1)[0]);
+  EXPECT_GT(apps::heat_color(0)[2], apps::heat_color(0)[0]);  // blue at 0
+}
+
+// The snapshots run the real binary: the same path as the command line, in a fresh folder.
+class Snapshot : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    m_folder =
+        std::filesystem::temp_directory_path() / ("viewer_test_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(m_folder);
+  }
+  void TearDown() override { std::filesystem::remove_all(m_folder); }
+
+  int run_viewer(const std::string& arguments) const {
+    const std::string command = std::string(CGAL_POLICIES_BIN_DIR) + "/mesh_viewer " + arguments +
+                                " > " + (m_folder / "out.txt").string() + " 2>&1";
+    const int status = std::system(command.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  std::string path(const std::string& name) const { return (m_folder / name).string(); }
+
+  std::filesystem::path m_folder;
+};
+
+struct Picture {
+  int width = 0, height = 0;
+  std::vector<unsigned char> rgb;
+  bool background(int x, int y) const {
+    const unsigned char* p = &rgb[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 3];
+    return p[0] == apps::kBackground[0] && p[1] == apps::kBackground[1] &&
+           p[2] == apps::kBackground[2];
+  }
+};
+
+Picture load_png(const std::string& path) {
+  Picture picture;
+  int channels = 0;
+  std::unique_ptr<unsigned char, void (*)(void*)> data(
+      stbi_load(path.c_str(), &picture.width, &picture.height, &channels, 3), stbi_image_free);
+  if (data)
+    picture.rgb.assign(data.get(), data.get() + std::size_t(picture.width) * picture.height * 3);
+  return picture;
+}
+
+TEST_F(Snapshot, BunnyAtTenPercentIsCentredAndDiffersFromFiftyPercent) {
+  SKIP_WITHOUT_SHARED_DATA();
+  const std::string bunny = test_meshes::shared_data("bunny.obj");
+  ASSERT_EQ(run_viewer(bunny + " --policy classic --ratio 0.1 --size 640x300 --snapshot " +
+                       path("ten.png")),
+            0);
+  ASSERT_EQ(run_viewer(bunny + " --policy classic --ratio 0.5 --size 640x300 --snapshot " +
+                       path("fifty.png")),
+            0);
+  const Picture ten = load_png(path("ten.png")), fifty = load_png(path("fifty.png"));
+  ASSERT_EQ(ten.width, 640);
+  ASSERT_EQ(ten.height, 300);
+  ASSERT_EQ(fifty.rgb.size(), ten.rgb.size());
+
+  // Not blank, and the mesh where the camera looks: the middle of each pane.
+  std::size_t drawn = 0, central = 0;
+  for (int y = 0; y < ten.height; ++y)
+    for (int x = 0; x < ten.width; ++x) {
+      if (ten.background(x, y)) continue;
+      ++drawn;
+      const double pane_x = double(x % (ten.width / 2)) / (ten.width / 2),
+                   pane_y = double(y) / ten.height;
+      if (std::abs(pane_x - 0.5) < 0.3 && std::abs(pane_y - 0.5) < 0.3) ++central;
+    }
+  EXPECT_GT(drawn, std::size_t(ten.width * ten.height / 20));
+  EXPECT_GT(central, drawn * 3 / 4);
+
+  // The left panes show the same original; the right panes differ.
+  std::size_t left_differs = 0, right_differs = 0;
+  for (int y = 0; y < ten.height; ++y)
+    for (int x = 0; x < ten.width; ++x) {
+      const std::size_t i = (std::size_t(y) * ten.width + x) * 3;
+      const bool differs = !std::equal(&ten.rgb[i], &ten.rgb[i] + 3, &fifty.rgb[i]);
+      (x < ten.width / 2 ? left_differs : right_differs) += differs;
+    }
+  EXPECT_GT(right_differs, std::size_t(100));
+  EXPECT_LT(left_differs, right_differs / 10);  // only the captions' text
+}
+
+TEST_F(Snapshot, HeatMapColoursTheSimplifiedPane) {
+  SKIP_WITHOUT_SHARED_DATA();
+  ASSERT_EQ(run_viewer(test_meshes::shared_data("fandisk.obj") +
+                       " --policy classic --ratio 0.02 --heat-map --size 400x200 --snapshot " +
+                       path("heat.png")),
+            0);
+  const Picture picture = load_png(path("heat.png"));
+  ASSERT_EQ(picture.width, 400);
+  // Grey surfaces have r == g == b within a few levels; the heat map's colours do not.
+  auto coloured = [&](int x0, int x1) {
+    std::size_t count = 0;
+    for (int y = 0; y < picture.height; ++y)
+      for (int x = x0; x < x1; ++x) {
+        const unsigned char* p = &picture.rgb[(std::size_t(y) * picture.width + x) * 3];
+        count += std::max({p[0], p[1], p[2]}) - std::min({p[0], p[1], p[2]}) > 40;
+      }
+    return count;
+  };
+  EXPECT_EQ(coloured(0, 200), 0u);
+  EXPECT_GT(coloured(200, 400), 500u);
+}
+
+TEST_F(Snapshot, BadArgumentsAndUnwritableOutputsHaveTheirExitCodes) {
+  const std::string tetra = path("t.off");
+  {
+    std::ofstream off(tetra);
+    off << "OFF\n4 4 0\n1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n";
+  }
+  EXPECT_EQ(run_viewer(tetra + " --snapshot " + path("a.jpg")), 2);
+  EXPECT_EQ(run_viewer(tetra + " --size 10x10 --snapshot " + path("a.png")), 2);
+  EXPECT_EQ(run_viewer(tetra + " --size 64x64"), 2);
+  EXPECT_EQ(run_viewer(tetra + " --snapshot " + path("missing/a.png")), 4);
+  EXPECT_EQ(run_viewer(path("none.off") + " --snapshot " + path("a.png")), 3);
+  EXPECT_EQ(run_viewer(tetra + " --ratio 1 --size 64x48 --snapshot " + path("a.png")), 0);
+  EXPECT_EQ(load_png(path("a.png")).width, 64);
+  EXPECT_FALSE(std::filesystem::exists(path("missing")));
+}
+
+}  // namespace
