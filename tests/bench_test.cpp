@@ -92,7 +92,7 @@ int run_command(const std::string& command) { return std::system(command.c_str()
 class Bench_quick_preset : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    if (!test_meshes::shared_data_available()) return;
+    if (!test_meshes::shared_data_available() || test_meshes::real_meshes_skipped()) return;
     s_out = fs::temp_directory_path() / ("cgal_policies_bench_test_" + std::to_string(::getpid()));
     fs::remove_all(s_out);
     s_exit =
