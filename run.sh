@@ -7,7 +7,7 @@ cd "$(dirname "$0")"
 # peers and plots), which CI tests too.
 required=(g++ make cmake libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev libgtest-dev
           clang-format)
-optional=(libmeshoptimizer-dev libopenmesh-dev gnuplot-nox libglfw3-dev libimgui-dev libosmesa6-dev
+optional=(libmeshoptimizer-dev libopenmesh-dev gnuplot-nox pkg-config libglfw3-dev libimgui-dev libosmesa6-dev libgl-dev
           libstb-dev)
 
 install_missing() {
