@@ -7,6 +7,7 @@
 #include "common/mesh_io.h"
 #include "common/mesh_measures.h"
 #include "common/peak_memory.h"
+#include "common/policy_command_line.h"
 #include "common/policy_registry.h"
 #include "common/smoothing.h"
 
@@ -75,13 +76,11 @@ int run(int argc, char** argv) {
     print_help();
     return exit_success;
   }
-  const std::string policy_name = cli.take_value("policy").value_or("classic");
-  const Policy_entry* policy = find_policy(policy_name);
-  if (!policy)
-    throw App_error(exit_usage, "unknown policy '" + policy_name + "' (" + policy_names() + ")");
+  Policy_choice choice = take_policy_options(cli, "classic");
+  const Policy_entry* policy = choice.policy;
+  Simplify_settings& settings = choice.settings;
   std::optional<double> ratio = cli.take_number("ratio");
   const std::optional<double> faces = cli.take_number("faces");
-  const double max_normal_angle = cli.take_number("max-normal-angle").value_or(90.0);
   const std::optional<double> samples = cli.take_number("samples");
   const std::optional<double> max_error = cli.take_number("max-error");
   const double merge_distance = cli.take_number("merge-distance").value_or(0.0);
@@ -89,17 +88,8 @@ int run(int argc, char** argv) {
   const Smoothing_request smoothing = take_smoothing_options(cli);
   const bool json = cli.take_flag("json"), measure = cli.take_flag("measure"),
              force = cli.take_flag("force"), quiet = cli.take_flag("quiet");
-  Simplify_settings settings = default_settings(*policy, 0);
-  settings.max_normal_angle_deg = max_normal_angle;
   if (max_error && !(*max_error > 0)) throw App_error(exit_usage, "--max-error must be positive");
   settings.max_error = max_error.value_or(0.0);
-  for (const Policy_option& o : policy->options) {
-    if (o.is_flag) {
-      if (cli.take_flag(o.name)) settings.options[o.name] = 1;
-    } else if (const auto value = cli.take_number(o.name)) {
-      settings.options[o.name] = *value;
-    }
-  }
   const std::vector<std::string> args = cli.positionals();
   if (args.size() < 2 || args.size() > 3)
     throw App_error(exit_usage, "usage: simplify IN OUT [RATIO] [options] (see --help)");
