@@ -33,6 +33,14 @@ Mesh translated(Mesh mesh, double dx, double dy, double dz) {
   return mesh;
 }
 
+Mesh simplified_by_gh(const Mesh& input, double ratio) {
+  Mesh mesh = input;
+  const apps::Policy_entry& gh = *apps::find_policy("gh");
+  gh.run(mesh, apps::default_settings(gh, std::size_t(ratio * input.number_of_faces())));
+  mesh.collect_garbage();
+  return mesh;
+}
+
 TEST(MeshError, IdenticalMeshesAreAtDistanceZero) {
   const Mesh cube = unit_cube();
   const apps::Mesh_error e = apps::measure_mesh_error(cube, cube, kSamples);
@@ -88,10 +96,7 @@ TEST(MeshError, AMissingPartShowsInOneDirectionOnly) {
 TEST(MeshError, IsDeterministicAndItsDefaultSamplingIsDenseEnough) {
   SKIP_WITHOUT_SHARED_DATA();
   const Mesh bunny = apps::read_triangle_mesh(shared_data("bunny.obj"));
-  Mesh simplified = bunny;
-  const apps::Policy_entry& gh = *apps::find_policy("gh");
-  gh.run(simplified, apps::default_settings(gh, bunny.number_of_faces() / 10));
-  simplified.collect_garbage();
+  const Mesh simplified = simplified_by_gh(bunny, 0.1);
 
   const apps::Mesh_error once = apps::measure_mesh_error(bunny, simplified);
   const apps::Mesh_error again = apps::measure_mesh_error(bunny, simplified);
@@ -110,10 +115,7 @@ TEST(MeshError, AgreesWithCgalsCertifiedHausdorffDistanceOnTheBunny) {
   // within the bound: an independent check of the sampled maxima, which can only fall short.
   SKIP_WITHOUT_SHARED_DATA();
   const Mesh bunny = apps::read_triangle_mesh(shared_data("bunny.obj"));
-  Mesh simplified = bunny;
-  const apps::Policy_entry& gh = *apps::find_policy("gh");
-  gh.run(simplified, apps::default_settings(gh, bunny.number_of_faces() / 10));
-  simplified.collect_garbage();
+  const Mesh simplified = simplified_by_gh(bunny, 0.1);
   const double bound = 1e-4 * apps::bbox_diagonal(bunny);
   namespace PMP = CGAL::Polygon_mesh_processing;
   const double certified_ab =
