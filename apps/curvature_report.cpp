@@ -15,14 +15,10 @@
 #include "common/Json_object.h"
 #include "common/app_main.h"
 #include "common/mesh_io.h"
+#include "common/mesh_measures.h"
 
 #include <cgal_policies/internal/approximate_curvature.h>
 #include <cgal_policies/internal/mesh_geometry.h>
-
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/Polygon_mesh_processing/distance.h>
 
 #include <algorithm>
 #include <cmath>
@@ -31,15 +27,9 @@
 #include <numeric>
 #include <vector>
 
-namespace PMP = CGAL::Polygon_mesh_processing;
-
 namespace apps {
 namespace {
 
-using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
-
-constexpr unsigned kSamplingSeed = 20260101;
 constexpr std::size_t kDefaultSamples = 100000;
 constexpr double kCurvedShare = 0.25;  // of the input's area
 
@@ -86,9 +76,10 @@ double angle_deg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   return std::acos(std::clamp(a.dot(b), -1.0, 1.0)) * 180.0 / M_PI;
 }
 
-void report_simplification(const std::string& prefix, const Mesh& input, const Tree& input_tree,
-                           const std::vector<bool>& curved, const std::vector<Point>& samples,
-                           const Mesh& simplified, Json_object& json) {
+void report_simplification(const std::string& prefix, const Mesh& input,
+                           const Face_tree& input_tree, const std::vector<bool>& curved,
+                           const std::vector<Point>& samples, const Mesh& simplified,
+                           Json_object& json) {
   std::size_t curved_faces = 0;
   for (auto f : faces(simplified)) {
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
@@ -99,7 +90,7 @@ void report_simplification(const std::string& prefix, const Mesh& input, const T
     curved_faces += curved[nearest.second];
   }
 
-  Tree tree(faces(simplified).first, faces(simplified).second, simplified);
+  Face_tree tree(faces(simplified).first, faces(simplified).second, simplified);
   tree.accelerate_distance_queries();
   double sum[2] = {0, 0};  // flat, curved
   std::size_t count[2] = {0, 0};
@@ -135,14 +126,9 @@ int run(int argc, char** argv) {
 
   Mesh input = read_triangle_mesh(args[0]);
   const std::vector<bool> curved = curved_quarter(input);
-  Tree input_tree(faces(input).first, faces(input).second, input);
+  Face_tree input_tree(faces(input).first, faces(input).second, input);
   input_tree.accelerate_distance_queries();
-  std::vector<Point> points;
-  PMP::sample_triangle_mesh(input, std::back_inserter(points),
-                            CGAL::parameters::number_of_points_on_faces(std::size_t(samples))
-                                .do_sample_vertices(false)
-                                .do_sample_edges(false)
-                                .random_seed(kSamplingSeed));
+  const std::vector<Point> points = sample_faces(input, std::size_t(samples));
 
   Json_object json;
   json.add("input", args[0]);

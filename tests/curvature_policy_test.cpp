@@ -54,12 +54,6 @@ Mesh::Vertex_index vertex_at(const Mesh& mesh, const Point& p) {
   return Mesh::null_vertex();
 }
 
-Mesh::Halfedge_index halfedge_between(const Mesh& mesh, const Point& a, const Point& b) {
-  const auto h = halfedge(vertex_at(mesh, a), vertex_at(mesh, b), mesh);
-  EXPECT_TRUE(h.second) << "no edge " << a << " -> " << b;
-  return h.first;
-}
-
 template <typename P>
 double edge_cost(const P& policies, Mesh& mesh, Mesh::Halfedge_index h) {
   const Profile profile = edge_profile(mesh, h);

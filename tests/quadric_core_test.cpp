@@ -28,13 +28,6 @@ Quadric_map vertex_quadrics(Mesh& mesh, double border_weight) {
   return q;
 }
 
-Mesh::Halfedge_index halfedge_between(const Mesh& mesh, const Point& a, const Point& b) {
-  for (auto h : halfedges(mesh))
-    if (mesh.point(source(h, mesh)) == a && mesh.point(target(h, mesh)) == b) return h;
-  ADD_FAILURE() << "no edge " << a << " -> " << b;
-  return Mesh::null_halfedge();
-}
-
 Eigen::Vector3d eigen(const Point& p) { return {p.x(), p.y(), p.z()}; }
 
 TEST(Quadric, EvaluatesTheWeightedSquaredDistanceToItsPlane) {

@@ -68,6 +68,14 @@ inline Profile edge_profile(Mesh& mesh, Mesh::Halfedge_index h) {
   return Profile(h, mesh, kernel, 0, mesh.points(), 0, true);
 }
 
+// The halfedge from the vertex at a to the vertex at b; a test failure when there is none.
+inline Mesh::Halfedge_index halfedge_between(const Mesh& mesh, const Point& a, const Point& b) {
+  for (auto h : halfedges(mesh))
+    if (mesh.point(source(h, mesh)) == a && mesh.point(target(h, mesh)) == b) return h;
+  ADD_FAILURE() << "no edge " << a << " -> " << b;
+  return Mesh::null_halfedge();
+}
+
 inline std::string shared_data(const std::string& name) {
   return std::string(CGAL_POLICIES_SHARED_DATA) + "/" + name;
 }

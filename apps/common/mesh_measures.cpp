@@ -1,8 +1,5 @@
 #include "mesh_measures.h"
 
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
@@ -22,9 +19,6 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 namespace apps {
 namespace {
 
-using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
-
 constexpr unsigned kSamplingSeed = 20260101;
 
 struct One_sided {
@@ -35,7 +29,7 @@ struct One_sided {
 
 // Squared distances from points to the surface in the tree, computed on every core; each slot is
 // written by one thread, so the result does not depend on the schedule.
-std::vector<double> squared_distances(const std::vector<Point>& points, const Tree& tree) {
+std::vector<double> squared_distances(const std::vector<Point>& points, const Face_tree& tree) {
   std::vector<double> result(points.size());
   const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
   const std::size_t chunk = (points.size() + threads - 1) / threads;
@@ -63,7 +57,7 @@ std::vector<Point> dense_samples_near_the_worst(const Mesh& from, const std::vec
   std::partial_sort(
       order.begin(), order.begin() + worst, order.end(),
       [&](std::size_t i, std::size_t j) { return d2[i] > d2[j] || (d2[i] == d2[j] && i < j); });
-  Tree from_tree(faces(from).first, faces(from).second, from);
+  Face_tree from_tree(faces(from).first, faces(from).second, from);
   std::set<Mesh::Face_index> worst_faces;
   for (std::size_t k = 0; k < worst; ++k)
     worst_faces.insert(from_tree.closest_point_and_primitive(points[order[k]]).second);
@@ -82,19 +76,12 @@ std::vector<Point> dense_samples_near_the_worst(const Mesh& from, const std::vec
 }
 
 One_sided one_sided_distance(const Mesh& from, const Mesh& to, std::size_t samples) {
-  // CGAL 5.5's triangle-mesh point generator (behind sample_triangle_mesh) picks a face with the
-  // generator it is given but the point inside the face with CGAL's default generator, so that is
-  // the one seeded here.
-  std::vector<Point> points;
+  std::vector<Point> points = sample_faces(from, samples);
   points.reserve(samples + from.number_of_vertices());
-  CGAL::Random& random = CGAL::get_default_random();
-  random = CGAL::Random(kSamplingSeed);
-  std::copy_n(CGAL::Random_points_in_triangle_mesh_3<Mesh>(from, random), samples,
-              std::back_inserter(points));
   const std::size_t face_samples = points.size();
   for (auto v : vertices(from)) points.push_back(from.point(v));
 
-  Tree tree(faces(to).first, faces(to).second, to);
+  Face_tree tree(faces(to).first, faces(to).second, to);
   tree.accelerate_distance_queries();
   const std::vector<double> d2 = squared_distances(points, tree);
 
@@ -122,6 +109,19 @@ double corner_angle_deg(const Point& a, const Point& b, const Point& c) {
 }
 
 }  // namespace
+
+std::vector<Point> sample_faces(const Mesh& mesh, std::size_t samples) {
+  // CGAL 5.5's triangle-mesh point generator (behind sample_triangle_mesh) picks a face with the
+  // generator it is given but the point inside the face with CGAL's default generator, so that is
+  // the one seeded here.
+  std::vector<Point> points;
+  points.reserve(samples);
+  CGAL::Random& random = CGAL::get_default_random();
+  random = CGAL::Random(kSamplingSeed);
+  std::copy_n(CGAL::Random_points_in_triangle_mesh_3<Mesh>(mesh, random), samples,
+              std::back_inserter(points));
+  return points;
+}
 
 double bbox_diagonal(const Mesh& mesh) {
   const CGAL::Bbox_3 box = PMP::bbox(mesh);

@@ -6,7 +6,12 @@
 #include "Json_object.h"
 #include "Mesh_types.h"
 
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+
 #include <cstddef>
+#include <vector>
 
 namespace apps {
 
@@ -32,7 +37,14 @@ struct Mesh_validity {
   long euler_characteristic = 0;
 };
 
+// An AABB tree over a mesh's faces, for distance and closest-face queries.
+using Face_tree =
+    CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
+
 double bbox_diagonal(const Mesh& mesh);
+
+// `samples` area-uniform random points on the faces of `mesh`, the same on every run.
+std::vector<Point> sample_faces(const Mesh& mesh, std::size_t samples);
 
 // Distances from samples of `a` (its vertices and `samples` area-uniform random points on its
 // faces, fixed seed, plus a fine grid on the faces of the farthest samples) to `b`, and the other
