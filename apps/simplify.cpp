@@ -13,8 +13,13 @@
 
 #include <cgal_policies/Border_pair_contraction.h>
 
+#ifdef CGAL_POLICIES_WITH_VIEWER
+#include "snapshot.h"
+#endif
+
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 namespace apps {
@@ -32,7 +37,8 @@ void print_help() {
          "  --max-normal-angle A  our policies refuse collapses that turn a face normal by\n"
          "                        more than A degrees (default 90)\n"
          "  --max-error X         also stop before the output's two-sided Hausdorff distance\n"
-         "                        to IN would exceed X (a fraction of IN's diagonal)\n"
+         "                        to IN would exceed X (a fraction of IN's diagonal); every\n"
+         "                        edge-collapse policy, not fast\n"
          "  --merge-distance T    first stitch border vertices of different border loops\n"
          "                        closer than T (a fraction of IN's diagonal; default 0, off)\n"
       << smoothing_help()
@@ -41,6 +47,14 @@ void print_help() {
          "  --samples N           face samples per direction for --measure (default "
       << kDefaultErrorSamples
       << ")\n"
+         "  --snapshot OUT.png    also render IN and OUT side by side, as mesh_viewer does,\n"
+         "                        without a window; all or nothing: when the picture fails,\n"
+         "                        OUT is not written (exit 4, or 1 without OpenGL)"
+#ifndef CGAL_POLICIES_WITH_VIEWER
+         "\n                        (not in this build: mesh_viewer's packages were missing)"
+#endif
+         "\n"
+         "  --size WxH            the snapshot's size in pixels (default 1600x800)\n"
          "  --force               allow OUT to be the same file as IN\n"
          "  --quiet               no progress bar, no summary\n"
          "  --help                this text\n\n"
@@ -70,6 +84,68 @@ std::size_t target_face_count(std::optional<double> ratio, std::optional<double>
   return std::size_t(std::llround(*ratio * double(input_faces)));
 }
 
+// --snapshot OUT.png [--size WxH], checked before anything is read or written. The picture is
+// rendered before OUT is written and removed again if OUT cannot be written: a failed run leaves
+// neither new file, and an OUT that existed before is only replaced once the picture exists.
+#ifdef CGAL_POLICIES_WITH_VIEWER
+struct Snapshot_request {
+  std::string png;
+  Snapshot_settings settings;
+};
+
+std::optional<Snapshot_request> take_snapshot_options(Command_line& cli) {
+  const std::optional<std::string> png = cli.take_value("snapshot");
+  const std::optional<std::string> size = cli.take_value("size");
+  if (size && !png) throw App_error(exit_usage, "--size goes with --snapshot");
+  if (!png) return std::nullopt;
+  // A .png is never a mesh, so never IN or OUT.
+  if (std::filesystem::path(*png).extension() != ".png")
+    throw App_error(exit_usage, *png + ": the snapshot must be a .png file");
+  Snapshot_request request{*png, {}};
+  if (size) parse_snapshot_size(*size, request.settings);
+  return request;
+}
+
+void write_mesh_and_snapshot(const Mesh& original, const Mesh& simplified,
+                             const std::string& policy_name,
+                             const std::optional<Snapshot_request>& snapshot,
+                             const std::string& output) {
+  if (snapshot) {
+    Snapshot_settings settings = snapshot->settings;
+    caption_snapshot(original, simplified, policy_name, settings);
+    write_snapshot(original, simplified, settings, snapshot->png);
+  }
+  try {
+    write_mesh_atomically(simplified, output);
+  } catch (...) {
+    std::error_code ignored;
+    if (snapshot) std::filesystem::remove(snapshot->png, ignored);
+    throw;
+  }
+}
+#else
+struct Snapshot_request {
+  std::string png;
+};
+
+std::optional<Snapshot_request> take_snapshot_options(Command_line& cli) {
+  const std::optional<std::string> png = cli.take_value("snapshot");
+  const std::optional<std::string> size = cli.take_value("size");
+  if (size && !png) throw App_error(exit_usage, "--size goes with --snapshot");
+  if (png)
+    throw App_error(exit_usage, *png +
+                                    ": --snapshot is not in this build (mesh_viewer's packages "
+                                    "were missing when it was configured)");
+  return std::nullopt;
+}
+
+// take_snapshot_options refuses every picture in this build.
+void write_mesh_and_snapshot(const Mesh&, const Mesh& simplified, const std::string&,
+                             const std::optional<Snapshot_request>&, const std::string& output) {
+  write_mesh_atomically(simplified, output);
+}
+#endif
+
 int run(int argc, char** argv) {
   Command_line cli(argc, argv);
   if (cli.take_flag("help", "-h")) {
@@ -86,6 +162,7 @@ int run(int argc, char** argv) {
   const double merge_distance = cli.take_number("merge-distance").value_or(0.0);
   if (!(merge_distance >= 0)) throw App_error(exit_usage, "--merge-distance must be at least 0");
   const Smoothing_request smoothing = take_smoothing_options(cli);
+  const std::optional<Snapshot_request> snapshot = take_snapshot_options(cli);
   const bool json = cli.take_flag("json"), measure = cli.take_flag("measure"),
              force = cli.take_flag("force"), quiet = cli.take_flag("quiet");
   if (max_error && !(*max_error > 0)) throw App_error(exit_usage, "--max-error must be positive");
@@ -117,7 +194,7 @@ int run(int argc, char** argv) {
   const std::size_t input_faces = mesh.number_of_faces();
   const std::size_t input_vertices = mesh.number_of_vertices();
   settings.target_faces = target_face_count(ratio, faces, input_faces);
-  const Mesh original = measure || smoothing.bounded ? mesh : Mesh();
+  const Mesh original = measure || smoothing.bounded || snapshot ? mesh : Mesh();
   // The pre-pass (policies.md §0, pair contraction) is not part of the simplification's time.
   const cgal_policies::Border_pair_contraction_report merge_report =
       cgal_policies::Border_pair_contraction(merge_distance)(mesh);
@@ -134,7 +211,7 @@ int run(int argc, char** argv) {
     outcome.stop_reason = "error_bound_reached";
   const std::size_t refused_smoothing_moves =
       smooth_mesh(mesh, original, smoothing, smoothing_tolerance);
-  write_mesh_atomically(mesh, output);
+  write_mesh_and_snapshot(original, mesh, policy->name, snapshot, output);
 
   const std::size_t removed = input_faces - mesh.number_of_faces();
   Json_object report;
@@ -151,6 +228,7 @@ int run(int argc, char** argv) {
   report.add("peak_memory_mib", peak_rss_mib());
   report.add("stop_reason", outcome.stop_reason);
   report.add("max_error", settings.max_error);
+  if (snapshot) report.add("snapshot", snapshot->png);
   report.add("smooth_iterations", smoothing.iterations);
   report.add("smooth_refused_moves", refused_smoothing_moves);
   report.add("repairs", read_report.repairs);
@@ -174,6 +252,7 @@ int run(int argc, char** argv) {
   } else if (!quiet) {
     std::printf("%s: %zu -> %zu faces in %.3f s (%s)\n", policy->name.c_str(), input_faces,
                 std::size_t(mesh.number_of_faces()), outcome.seconds, outcome.stop_reason.c_str());
+    if (snapshot) std::printf("wrote %s\n", snapshot->png.c_str());
     if (measure)
       std::printf("two-sided Hausdorff %.4f%%, mean %.4f%% / %.4f%% of the diagonal\n",
                   100 * error.hausdorff / error.bbox_diagonal,

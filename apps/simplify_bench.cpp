@@ -42,7 +42,9 @@ void print_help() {
                "  --preset NAME        ";
   for (const Bench_preset& p : bench_presets())
     std::cout << (&p == &bench_presets().front() ? "" : "                       ") << p.name << ": "
-              << p.description << " (" << p.repetitions << " repetitions)\n";
+              << p.description << " (" << p.repetitions
+              << (p.repetitions == 1 ? " repetition" : " repetitions") << ", time limit "
+              << p.time_limit_seconds << " s)\n";
   std::cout << "  --data DIR           where the presets' meshes are (default ../shared/data)\n"
                "  --mesh FILE          a mesh of your own; repeat for several\n"
                "  --ratios A,B         targets as fractions of the faces kept (default 0.1)\n"
@@ -54,6 +56,9 @@ void print_help() {
                "  --repetitions N      runs per case; the fastest counts (default: the preset's, "
                "else 3)\n"
                "  --samples N          face samples per direction of the error measure\n"
+               "  --time-limit S       stop an edge-collapse run after S seconds where it is,\n"
+               "                       and do not repeat it; 0: none (default: the preset's,\n"
+               "                       else none)\n"
                "  --out DIR            also write runs.csv, runs.json, report.md and PNG plots\n"
                "  --OPTION X           a policy option, for every policy that has it (simplify "
                "--help)\n"
@@ -147,6 +152,9 @@ int run(int argc, char** argv) {
   const std::optional<std::string> policy_list = cli.take_value("policies");
   const std::size_t repetitions = positive_count(cli.take_number("repetitions"), "--repetitions");
   const std::size_t samples = positive_count(cli.take_number("samples"), "--samples");
+  const std::optional<double> time_limit = cli.take_number("time-limit");
+  if (time_limit && !(*time_limit >= 0))
+    throw App_error(exit_usage, "--time-limit must be at least 0 seconds");
   const std::optional<std::string> out = cli.take_value("out");
 
   Bench_plan plan;
@@ -173,12 +181,14 @@ int run(int argc, char** argv) {
     }
     plan.repetitions = repetitions ? repetitions : preset->repetitions;
     plan.samples = samples ? samples : preset->samples;
+    plan.time_limit_seconds = time_limit.value_or(preset->time_limit_seconds);
   } else {
     if (mesh_files.empty()) throw App_error(exit_usage, "give --preset or --mesh (see --help)");
     const std::vector<Bench_target> targets = ad_hoc_targets(ratios, faces);
     for (const std::string& file : mesh_files) plan.meshes.push_back({file, targets});
     plan.repetitions = repetitions ? repetitions : 3;
     plan.samples = samples ? samples : kDefaultErrorSamples;
+    plan.time_limit_seconds = time_limit.value_or(0.0);
   }
   // Fail before hours of work, not after.
   for (const Bench_mesh& m : plan.meshes)

@@ -8,9 +8,14 @@
 // - Passes k = 0, 1, ... scan the triangles in order and collapse an edge whose error is below
 //   t_k = 1e-9 (k + 3)^a D^2 (D the bounding-box diagonal, so the schedule is scale-invariant),
 //   at most one collapse per triangle per pass; reference lists are compacted every few passes.
+//   Ours: a pass also takes only errors within the cheapest 40% of the triangles not refused
+//   since they last changed, so that cheap edges go first even where t_0 already exceeds nearly
+//   every error (fine meshes: dragon.ply's mean error at 1% falls from 2x gh's to 1.1x).
 // - A collapse is refused when it breaks the link condition (which the report's method lacks: a
 //   manifold input gives a manifold output), when it turns a surviving face normal by more than
-//   max_normal_angle_deg or makes a face degenerate, and a border vertex only moves along the
+//   max_normal_angle_deg, or when it makes a needle or a sliver (twice the area over the squared
+//   longest edge below 1e-3 and below the face's own before); a face already degenerate in the
+//   input does not block the collapses that remove it. A border vertex only moves along the
 //   border (an edge from the interior keeps the border end in place).
 // - Lossless mode: only collapses of error zero up to round-off (1e-14 D^2).
 // - Deterministic: the same mesh gives the same result.

@@ -59,6 +59,7 @@ class Hausdorff_bounded_filter {
         m_search(false),
         m_base_filter(base_filter) {
     m_tracker->attach_to_itself(tm, get(CGAL::vertex_point, tm));
+    m_tracker->defer_commits();
   }
 
   template <typename Profile>

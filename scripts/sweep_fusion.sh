@@ -9,7 +9,8 @@
 #   BIN_DIR  where simplify is (default build/bin)
 #   OUT_DIR  where the raw results go (default out/sweep_fusion); results.tsv holds one line a run
 # Environment: DATA (default ../shared/data), SAMPLES per direction for --measure (default 50000),
-#   MUS and WEIGHTS (the grid, space-separated). About 20 minutes on a busy 2-core machine.
+#   MUS and WEIGHTS (the grid, space-separated), MESHES (default bunny fandisk nefertiti cow
+#   rocker-arm). About 20 minutes on a busy 2-core machine.
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -19,7 +20,7 @@ data="${DATA:-$root/../shared/data}"
 samples="${SAMPLES:-50000}"
 mus="${MUS:-0 0.5 2 8}"
 weights="${WEIGHTS:-0 0.005 0.02}"
-meshes="bunny fandisk nefertiti cow rocker-arm"
+meshes="${MESHES:-bunny fandisk nefertiti cow rocker-arm}"
 ratios="0.1 0.01"
 
 [[ -x "$bin/simplify" ]] || { echo "sweep_fusion: $bin/simplify: not built" >&2; exit 2; }

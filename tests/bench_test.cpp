@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -196,6 +197,31 @@ TEST_F(Bench_quick_preset, GhRowsMatchSimplify) {
       EXPECT_EQ(json_number(json, field), std::stod(row.at(field))) << field;
   }
   EXPECT_GT(checked, 0u);
+}
+
+// A limit that has passed before the first collapse: every edge-collapse run stops at once, is
+// marked in the report and is not repeated.
+TEST(Bench_time_limit, StopsARunWhereItIsAndDoesNotRepeatIt) {
+  const fs::path out =
+      fs::temp_directory_path() / ("cgal_policies_bench_limit_" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  const std::string bench = std::string(CGAL_POLICIES_BIN_DIR) + "/simplify_bench --mesh '" +
+                            CGAL_POLICIES_SOURCE_DIR + "/data/cow.obj' --ratios 0.5 ";
+  ASSERT_EQ(
+      run_command(bench + "--policies gh,classic --repetitions 3 --samples 1000 --time-limit " +
+                  "1e-9 --out '" + out.string() + "' > /dev/null 2>&1"),
+      0);
+  const std::vector<Row> rows = read_csv(out / "runs.csv");
+  ASSERT_EQ(rows.size(), 2u);
+  for (const Row& row : rows) {
+    EXPECT_EQ(row.at("stop_reason"), "time_limit") << row.at("policy");
+    EXPECT_EQ(row.at("repetitions"), "1") << row.at("policy");
+    EXPECT_EQ(row.at("output_faces"), row.at("input_faces")) << row.at("policy");
+  }
+  EXPECT_EQ(count_occurrences(read_text(out / "report.md"), "†"), 3u);  // two rows, one note
+  fs::remove_all(out);
+  const int status = run_command(bench + "--time-limit -1 > /dev/null 2>&1");
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 2) << status;
 }
 
 }  // namespace

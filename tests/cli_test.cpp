@@ -6,9 +6,11 @@
 
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <regex>
 #include <sstream>
 
@@ -173,6 +175,66 @@ TEST_F(Cli, MeshErrorBetweenAFileAndItselfIsZero) {
   EXPECT_LE(std::stod(hausdorff[1]), 1e-12);
   EXPECT_NE(r.out.find("\"valid\": true"), std::string::npos) << r.out;
   EXPECT_EQ(run("mesh_error", in.string() + " " + file("missing.off").string()).exit_code, 3);
+}
+
+// A number field of simplify's JSON object; NaN when missing.
+double json_number(const std::string& json, const std::string& field) {
+  std::smatch match;
+  if (!std::regex_search(json, match, std::regex("\"" + field + "\": ([-+.e0-9]+)")))
+    return std::nan("");
+  return std::stod(match[1]);
+}
+
+TEST_F(Cli, ASnapshotThatCannotBeWrittenLeavesNoMeshEither) {
+  // Builds without the viewer refuse --snapshot as bad usage, before reading anything.
+  const bool with_viewer =
+      run("simplify", "--help").out.find("not in this build") == std::string::npos;
+  const fs::path in = write("tet.off", kTetrahedronOff), out = file("out.off");
+  const fs::path png = file("no_such_folder") / "picture.png";
+  expect_failure(in.string() + " " + out.string() + " 1 --snapshot " + png.string(),
+                 with_viewer ? 4 : 2, png, out);
+  EXPECT_FALSE(fs::exists(file("no_such_folder")));
+  if (!with_viewer) return;
+  // The picture comes first: an OUT that existed is not replaced when it fails.
+  const fs::path kept = write("kept.off", "an older output");
+  EXPECT_EQ(run("simplify", in.string() + " " + kept.string() + " 1 --snapshot " + png.string())
+                .exit_code,
+            4);
+  std::ifstream older(kept);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(older), {}), "an older output");
+}
+
+TEST_F(Cli, MaxErrorBoundsEveryEdgeCollapsePolicy) {
+  const std::string cow = std::string(CGAL_POLICIES_SOURCE_DIR) + "/data/cow.obj";
+  const fs::path out = file("cow.off");
+  for (const char* policy : {"gh", "classic", "curvature"}) {
+    const std::string args = cow + " " + out.string() + " --ratio 0.01 --policy " + policy +
+                             " --json --quiet --measure --samples 20000";
+    const Command_result bounded = run("simplify", args + " --max-error 0.002");
+    ASSERT_EQ(bounded.exit_code, 0) << policy << ": " << bounded.err;
+    EXPECT_NE(bounded.out.find("\"stop_reason\": \"error_bound_reached\""), std::string::npos)
+        << policy << ": " << bounded.out;
+    EXPECT_NE(bounded.out.find("\"valid\": true"), std::string::npos) << policy;
+    EXPECT_LE(json_number(bounded.out, "hausdorff"),
+              0.002 * json_number(bounded.out, "bbox_diagonal"))
+        << policy;
+    const Command_result free = run("simplify", args);
+    ASSERT_EQ(free.exit_code, 0) << policy << ": " << free.err;
+    EXPECT_LT(json_number(free.out, "output_faces"), json_number(bounded.out, "output_faces"))
+        << policy;
+    EXPECT_GT(json_number(free.out, "hausdorff"), 0.002 * json_number(free.out, "bbox_diagonal"))
+        << policy << ": the bound must have been needed";
+  }
+}
+
+TEST_F(Cli, TheFastPolicyRefusesMaxError) {
+  const fs::path in = write("tet.off", kTetrahedronOff), out = file("out.off");
+  const Command_result r =
+      run("simplify", in.string() + " " + out.string() + " 0.5 --policy fast --max-error 0.01");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("--max-error"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
 }
 
 TEST_F(Cli, TheBunnyAtTenPercentWithGhReachesItsTarget) {

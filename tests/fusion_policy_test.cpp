@@ -94,10 +94,15 @@ std::vector<double> interior_twists(const Mesh& mesh) {
     return cgal_policies::internal::vertex_normal(v, mesh, vpm,
                                                   cgal_policies::internal::Normal_weighting::area);
   };
+  const auto edge_term = [&](Mesh::Halfedge_index h) {
+    return cgal_policies::internal::Normal_variation_sum::of(
+        cgal_policies::internal::edge_normal_variation(h, mesh, vpm, normal, true));
+  };
   std::vector<double> twists;
   for (Vertex v : vertices(mesh))
     if (!is_border_vertex(v, mesh))
-      twists.push_back(cgal_policies::internal::normal_variation(v, mesh, vpm, normal).mean_twist);
+      twists.push_back(
+          cgal_policies::internal::normal_variation_sum(v, mesh, edge_term).mean_twist());
   return twists;
 }
 
@@ -205,17 +210,29 @@ Mesh bumpy_patch() {
   });
 }
 
-TEST(FusionPolicies, FeaturesAfterCollapsesAreThoseOfTheCurrentMesh) {
-  Mesh mesh = icosphere(3);
-  const Policies policies(mesh);
+// Simplifies `mesh` and checks the stored normal factors and twists against a fresh computation.
+void expect_features_of_the_current_mesh(Mesh mesh, double visual_weight) {
+  const Policies policies(mesh, Policies::default_mu, visual_weight);
   ASSERT_GT(simplify(mesh, 300, policies).size(), 500u);
-  const Policies fresh(mesh);
+  const Policies fresh(mesh, Policies::default_mu, visual_weight);
   fresh.initialize(mesh, get(CGAL::vertex_point, mesh), Kernel());
+  double largest_twist = 0;
   for (auto e : edges(mesh)) {
     const Vertex a = source(halfedge(e, mesh), mesh), b = target(halfedge(e, mesh), mesh);
     EXPECT_EQ(policies.normal_factor(a, b), fresh.normal_factor(a, b));
     EXPECT_EQ(policies.edge_twist(a, b), fresh.edge_twist(a, b));
+    largest_twist = (std::max)(largest_twist, fresh.edge_twist(a, b));
   }
+  // The twist is computed only when the visual term is on.
+  if (visual_weight > 0)
+    EXPECT_GT(largest_twist, 0.0);
+  else
+    EXPECT_EQ(largest_twist, 0.0);
+}
+
+TEST(FusionPolicies, FeaturesAfterCollapsesAreThoseOfTheCurrentMesh) {
+  expect_features_of_the_current_mesh(icosphere(3), 0.0);
+  expect_features_of_the_current_mesh(icosphere(3), 0.02);
 }
 
 void expect_scale_invariant(const Mesh& input, std::size_t edges_left) {

@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <future>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <thread>
@@ -192,13 +193,19 @@ class Snapshot : public ::testing::Test {
   }
   void TearDown() override { std::filesystem::remove_all(m_folder); }
 
-  int run_viewer(const std::string& arguments) const {
-    const std::string command = std::string(CGAL_POLICIES_BIN_DIR) + "/mesh_viewer " + arguments +
+  int run_app(const std::string& app, const std::string& arguments) const {
+    const std::string command = std::string(CGAL_POLICIES_BIN_DIR) + "/" + app + " " + arguments +
                                 " > " + (m_folder / "out.txt").string() + " 2>&1";
     const int status = std::system(command.c_str());
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   }
+  int run_viewer(const std::string& arguments) const { return run_app("mesh_viewer", arguments); }
+  int run_simplify(const std::string& arguments) const { return run_app("simplify", arguments); }
   std::string path(const std::string& name) const { return (m_folder / name).string(); }
+  std::string output_text() const {
+    std::ifstream in(m_folder / "out.txt");
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
 
   std::filesystem::path m_folder;
 };
@@ -298,6 +305,44 @@ TEST_F(Snapshot, BadArgumentsAndUnwritableOutputsHaveTheirExitCodes) {
   EXPECT_EQ(run_viewer(tetra + " --ratio 1 --size 64x48 --snapshot " + path("a.png")), 0);
   EXPECT_EQ(load_png(path("a.png")).width, 64);
   EXPECT_FALSE(std::filesystem::exists(path("missing")));
+}
+
+TEST_F(Snapshot, SimplifyWritesTheMeshAndItsPicture) {
+  SKIP_WITHOUT_SHARED_DATA();
+  ASSERT_EQ(
+      run_simplify(test_meshes::shared_data("bunny.obj") + " " + path("bunny.off") +
+                   " 0.1 --policy gh --json --snapshot " + path("bunny.png") + " --size 320x240"),
+      0)
+      << output_text();
+  EXPECT_TRUE(std::filesystem::exists(path("bunny.off")));
+  EXPECT_NE(output_text().find("\"snapshot\": \"" + path("bunny.png") + "\""), std::string::npos)
+      << output_text();
+  const Picture picture = load_png(path("bunny.png"));
+  ASSERT_EQ(picture.width, 320);
+  ASSERT_EQ(picture.height, 240);
+  std::size_t left = 0, right = 0;  // drawn pixels in each pane
+  for (int y = 0; y < picture.height; ++y)
+    for (int x = 0; x < picture.width; ++x)
+      if (!picture.background(x, y)) ++(x < picture.width / 2 ? left : right);
+  EXPECT_GT(left, std::size_t(picture.width * picture.height / 40));
+  EXPECT_GT(right, std::size_t(picture.width * picture.height / 40));
+}
+
+TEST_F(Snapshot, SimplifyWithABadSizeWritesNothing) {
+  const std::string tetra = path("t.off");
+  std::ofstream(tetra) << "OFF\n4 4 0\n1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n3 0 1 2\n3 0 3 1\n3 0 "
+                          "2 3\n3 1 3 2\n";
+  for (const char* size : {"10x10", "320by240", "320x240x2", "0x240"}) {
+    EXPECT_EQ(run_simplify(tetra + " " + path("t_out.off") + " 1 --snapshot " + path("t.png") +
+                           " --size " + size),
+              2)
+        << size;
+    EXPECT_FALSE(std::filesystem::exists(path("t_out.off"))) << size;
+    EXPECT_FALSE(std::filesystem::exists(path("t.png"))) << size;
+  }
+  EXPECT_EQ(run_simplify(tetra + " " + path("t_out.off") + " 1 --size 64x64"), 2);
+  EXPECT_EQ(run_simplify(tetra + " " + path("t_out.off") + " 1 --snapshot " + path("t.jpg")), 2);
+  EXPECT_FALSE(std::filesystem::exists(path("t_out.off")));
 }
 
 }  // namespace

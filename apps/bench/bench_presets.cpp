@@ -40,7 +40,8 @@ const std::vector<Bench_preset>& bench_presets() {
         {"dragon_res2.ply", {ratio(0.1), ratio(0.01)}},
         {"dragon.ply", {ratio(0.1), ratio(0.01)}}},
        3,
-       200000},
+       200000,
+       600},
       {"papers",
        "the papers' experiments: seed 000 (four levels per model), seed 004 (cow), seed 002 "
        "(dragon to 1%)",
@@ -52,8 +53,9 @@ const std::vector<Bench_preset>& bench_presets() {
         // The paper prints the second level as "389 663 / 71 145" (columns swapped): 71145 faces.
         {"dragon.ply", seed_000_levels("dragon", 779275, {358853, 71145, 3837, 1919})}},
        3,
-       200000},
-      {"quick", "a small mesh, for tests", {{"cow.obj", {ratio(0.5), ratio(0.1)}}}, 1, 50000},
+       200000,
+       600},
+      {"quick", "a small mesh, for tests", {{"cow.obj", {ratio(0.5), ratio(0.1)}}}, 1, 50000, 60},
   };
   return presets;
 }

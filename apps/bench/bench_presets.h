@@ -27,6 +27,8 @@ struct Bench_preset {
   std::vector<Bench_mesh> meshes;  // paths relative to the data folder
   std::size_t repetitions;
   std::size_t samples;  // face samples per direction for the error measure
+  // Per run, so that a policy far slower than the others cannot hold the whole matrix up.
+  double time_limit_seconds;
 };
 
 // The presets by name: "standard", "papers", "quick".

@@ -54,6 +54,11 @@ std::string target_cell(const Run_record& r) {
 }
 
 bool reached(const Run_record& r) { return r.output_faces <= r.target_faces; }
+bool timed_out(const Run_record& r) { return r.stop_reason == "time_limit"; }
+
+std::string faces_cell(const Run_record& r) {
+  return std::to_string(r.output_faces) + (timed_out(r) ? "†" : reached(r) ? "" : "*");
+}
 
 // Consecutive runs of one mesh, in the order they ran.
 std::vector<std::vector<const Run_record*>> group_by_mesh(const std::vector<Run_record>& records) {
@@ -73,12 +78,13 @@ std::string mesh_table(const std::vector<const Run_record*>& runs) {
       "| target → faces | policy | faces | seconds | × gh | faces removed/s | peak MiB (+run) | "
       "Hausdorff % | mean % (→ / ←) | validity |\n";
   md += "|---|---|--:|--:|--:|--:|--:|--:|--:|---|\n";
-  bool short_of_target = false;
+  bool short_of_target = false, out_of_time = false;
   for (const Run_record* r : runs) {
-    short_of_target |= !reached(*r);
+    short_of_target |= !reached(*r) && !timed_out(*r);
+    out_of_time |= timed_out(*r);
     const double d = r->error.bbox_diagonal > 0 ? r->error.bbox_diagonal : 1;
-    md += "| " + target_cell(*r) + " | " + r->policy + " | " + std::to_string(r->output_faces) +
-          (reached(*r) ? "" : "*") + " | " + seconds_cell(r->seconds) + " | " +
+    md += "| " + target_cell(*r) + " | " + r->policy + " | " + faces_cell(*r) + " | " +
+          seconds_cell(r->seconds) + " | " +
           (std::isfinite(r->time_vs_gh) ? format("%.3g", r->time_vs_gh) : "–") + " | " +
           format("%.0f", r->faces_removed_per_second) + " | " + format("%.0f", r->peak_memory_mib) +
           " (+" + format("%.0f", r->memory_added_mib) + ") | " + percent(r->error.hausdorff / d) +
@@ -86,6 +92,8 @@ std::string mesh_table(const std::vector<const Run_record*>& runs) {
           " | " + validity_cell(r->validity) + " |\n";
   }
   if (short_of_target) md += "\n\\* stopped short of the target: no collapse was left.\n";
+  if (out_of_time)
+    md += "\n† stopped at the time limit (`--time-limit`), after one run; its time is the limit.\n";
   return md + "\n";
 }
 

@@ -42,8 +42,10 @@ double median(std::vector<double> values) {
 }
 
 Simplify_settings settings_for(const Policy_entry& policy, std::size_t target_faces,
-                               const std::map<std::string, double>& given) {
+                               const Bench_plan& plan) {
   Simplify_settings settings = default_settings(policy, target_faces);
+  settings.time_limit_seconds = plan.time_limit_seconds;
+  const std::map<std::string, double>& given = plan.options;
   for (auto& [name, value] : settings.options) {
     const auto it = given.find(name);
     if (it != given.end()) value = it->second;
@@ -51,7 +53,8 @@ Simplify_settings settings_for(const Policy_entry& policy, std::size_t target_fa
   return settings;
 }
 
-// Runs one policy `repetitions` times on copies of `original`; keeps the first result.
+// Runs one policy `repetitions` times on copies of `original`; keeps the first result. A run cut
+// short by the time limit is not repeated: the others would be cut short too.
 Run_record run_policy(const Mesh& original, const Policy_entry& policy, const Bench_plan& plan,
                       const Simplify_settings& settings, Bench_progress& progress,
                       const std::string& case_name) {
@@ -76,6 +79,10 @@ Run_record run_policy(const Mesh& original, const Policy_entry& policy, const Be
       std::fprintf(stderr, "simplify_bench: %s: %s is not deterministic (%zu then %zu faces)\n",
                    case_name.c_str(), policy.name.c_str(), std::size_t(result.number_of_faces()),
                    std::size_t(mesh.number_of_faces()));
+    }
+    if (outcome.stop_reason == "time_limit") {
+      record.repetitions = rep + 1;
+      break;
     }
   }
   // The same steps as simplify --measure, so that both measure the very same mesh.
@@ -116,7 +123,7 @@ std::vector<Run_record> run_bench(const Bench_plan& plan) {
           name + " to " + std::to_string(target_faces) + " faces (" + describe_target(target) + ")";
       const std::size_t first = records.size();
       for (const Policy_entry& policy : plan.policies) {
-        const Simplify_settings settings = settings_for(policy, target_faces, plan.options);
+        const Simplify_settings settings = settings_for(policy, target_faces, plan);
         Run_record r = run_policy(original, policy, plan, settings, progress, case_name);
         r.mesh = name;
         r.input_faces = original.number_of_faces();

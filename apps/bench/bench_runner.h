@@ -24,6 +24,8 @@ struct Bench_plan {
   std::map<std::string, double> options;  // option values given on the command line
   std::size_t repetitions = 1;
   std::size_t samples = kDefaultErrorSamples;
+  // A run still going after this many seconds stops where it is (0: no limit); see run_policy.
+  double time_limit_seconds = 0;
   // Called after each mesh with every record so far, to keep partial results of long runs.
   std::function<void(const std::vector<Run_record>&)> on_mesh_done;
 };

@@ -1,9 +1,12 @@
 // Runs CGAL's edge_collapse with any cost, placement and filter under the apps' common stop
-// predicate (a face count), progress visitor and timer, so every policy is measured the same way.
+// predicate (a face count), progress visitor and timer, so every policy is measured the same way,
+// and bounds any policy's two-sided Hausdorff error when the settings ask for it (--max-error).
 #ifndef CGAL_POLICIES_APPS_EDGE_COLLAPSE_RUNNER_H
 #define CGAL_POLICIES_APPS_EDGE_COLLAPSE_RUNNER_H
 
 #include "policy_registry.h"
+
+#include <cgal_policies/Hausdorff_bounded_filter.h>
 
 #include <CGAL/Surface_mesh_simplification/Edge_collapse_visitor_base.h>
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
@@ -12,19 +15,29 @@
 
 namespace apps {
 
-// Stops once the mesh has no more than the target number of faces.
+// Stops once the mesh has no more than the target number of faces, or once the deadline has passed
+// when there is one (a time limit of 0 sets none).
 class Face_count_stop_predicate {
  public:
-  Face_count_stop_predicate(const Mesh& mesh, std::size_t target)
-      : m_mesh(&mesh), m_target(target) {}
+  using Clock = std::chrono::steady_clock;
+
+  Face_count_stop_predicate(const Mesh& mesh, std::size_t target, double time_limit_seconds = 0)
+      : m_mesh(&mesh), m_target(target), m_has_deadline(time_limit_seconds > 0) {
+    if (m_has_deadline)
+      m_deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                      std::chrono::duration<double>(time_limit_seconds));
+  }
   template <typename FT, typename Profile>
   bool operator()(const FT&, const Profile&, std::size_t, std::size_t) const {
-    return m_mesh->number_of_faces() <= m_target;
+    return m_mesh->number_of_faces() <= m_target || out_of_time();
   }
+  bool out_of_time() const { return m_has_deadline && Clock::now() >= m_deadline; }
 
  private:
   const Mesh* m_mesh;
   std::size_t m_target;
+  bool m_has_deadline;
+  Clock::time_point m_deadline;
 };
 
 // The collapse the visitor has seen but not reported yet: a cost's update_after_collapse may still
@@ -68,21 +81,36 @@ class Progress_visitor
   std::size_t m_collapses = 0;
 };
 
+// With settings.max_error > 0, every placement the policy proposes is certified against the mesh
+// as it is now (the input), in both directions, and the collapse refused otherwise; the run then
+// ends at the target or when no collapse keeps the bound ("no_collapse_left").
 template <typename GetCost, typename GetPlacement, typename Filter>
 Simplify_outcome run_edge_collapse(Mesh& mesh, const Simplify_settings& settings,
                                    const GetCost& cost, const GetPlacement& placement,
                                    const Filter& filter) {
   const auto start = std::chrono::steady_clock::now();
   Pending_collapse pending;
-  CGAL::Surface_mesh_simplification::edge_collapse(
-      mesh, Face_count_stop_predicate(mesh, settings.target_faces),
-      CGAL::parameters::get_cost(cost).get_placement(placement).filter(filter).visitor(
-          Progress_visitor(mesh, settings, pending)));
+  const Face_count_stop_predicate stop(mesh, settings.target_faces, settings.time_limit_seconds);
+  const auto collapse = [&](const auto& outer_filter) {
+    CGAL::Surface_mesh_simplification::edge_collapse(
+        mesh, stop,
+        CGAL::parameters::get_cost(cost)
+            .get_placement(placement)
+            .filter(outer_filter)
+            .visitor(Progress_visitor(mesh, settings, pending)));
+  };
+  // Outermost: the bound commits what it accepts, so no later check may refuse it (its header).
+  if (settings.max_error > 0)
+    collapse(cgal_policies::Hausdorff_bounded_filter<Mesh, Kernel, Filter>(mesh, settings.max_error,
+                                                                           filter));
+  else
+    collapse(filter);
   pending.report(settings);
   Simplify_outcome outcome;
   outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  outcome.stop_reason =
-      mesh.number_of_faces() <= settings.target_faces ? "target_reached" : "no_collapse_left";
+  outcome.stop_reason = mesh.number_of_faces() <= settings.target_faces ? "target_reached"
+                        : stop.out_of_time()                            ? "time_limit"
+                                                                        : "no_collapse_left";
   return outcome;
 }
 

@@ -13,6 +13,11 @@ namespace {
 Simplify_outcome run_fast(Mesh& mesh, const Simplify_settings& settings) {
   const double aggressiveness = settings.options.at("aggressiveness");
   if (!(aggressiveness > 0)) throw App_error(exit_usage, "--aggressiveness must be positive");
+  // The bound certifies edge collapses one by one; the engine's passes have no such hook.
+  if (settings.max_error > 0)
+    throw App_error(exit_usage,
+                    "--max-error needs an edge-collapse policy; fast runs its own engine (try "
+                    "classic)");
   const cgal_policies::Fast_threshold_simplifier simplifier(
       aggressiveness, settings.options.at("lossless") != 0, settings.max_normal_angle_deg,
       settings.options.at("border-weight"));

@@ -24,6 +24,9 @@ struct Simplify_settings {
   std::size_t target_faces = 0;
   double max_normal_angle_deg = 90;  // flip prevention of our own policies (policies.md §0)
   double max_error = 0;  // two-sided Hausdorff bound, a fraction of the input's diagonal; 0: none
+  // The edge-collapse policies stop where they are after this many seconds (0: no limit); the
+  // others finish in seconds and do not look at it.
+  double time_limit_seconds = 0;
   std::map<std::string, double> options;               // the policy's options, defaults filled in
   std::function<void(std::size_t faces)> on_progress;  // called now and then; may be empty
   // Called after every collapse with the vertex that disappeared and the one that stayed (already
@@ -33,7 +36,7 @@ struct Simplify_settings {
 
 struct Simplify_outcome {
   double seconds = 0;       // the simplification alone
-  std::string stop_reason;  // "target_reached" or "no_collapse_left"
+  std::string stop_reason;  // "target_reached", "no_collapse_left" or "time_limit"
 };
 
 struct Policy_entry {

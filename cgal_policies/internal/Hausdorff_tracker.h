@@ -29,9 +29,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <iterator>
 #include <limits>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 namespace cgal_policies {
@@ -43,8 +43,13 @@ constexpr std::size_t kRankingPieces = 32;
 constexpr std::size_t kSampleBudget = 600;
 // Only the best few candidates are put to the full test: the others rarely pass when they fail.
 constexpr std::size_t kMaxCertified = 3;
-// The flatness argument is not tried on triangles that meet more input triangles than this.
+// A walk on the input that ends within this share of the tolerance is taken as it is (an upper
+// bound is all the tests need); farther, the exact distance is looked up.
+constexpr double kWalkShare = 1.0;
+constexpr std::size_t kWalkSteps = 64;
+// The flatness argument gives up after this many input triangles.
 constexpr std::size_t kFlatSearchLimit = 2000;
+constexpr std::uint32_t kNoNeighbour = 0xffffffffu;
 
 template <typename TriangleMesh>
 class Hausdorff_tracker {
@@ -106,11 +111,31 @@ class Hausdorff_tracker {
     m_tolerance = tolerance_fraction * m_diagonal;
     if (m_options.reference == Hausdorff_reference::local) return;
     const auto vpm = get(CGAL::vertex_point, input);
+    using Input_face = typename boost::graph_traits<InputMesh>::face_descriptor;
+    std::vector<std::pair<Input_face, std::uint32_t>> index;
     for (auto f : faces(input)) {
       const Triangle_corners t = corners(f, input, vpm);
       m_input.emplace_back(search_point(t[0]), search_point(t[1]), search_point(t[2]));
       m_input_corners.push_back(t);
+      index.emplace_back(f, std::uint32_t(index.size()));
     }
+    std::sort(index.begin(), index.end());
+    m_input_neighbours.resize(m_input_corners.size());
+    // Across edge k of input triangle i (corners k, k + 1) lies m_input_neighbours[i][k].
+    for (const auto& [f, i] : index) {
+      std::array<std::uint32_t, 3> across;
+      int k = 0;
+      for (auto h : CGAL::halfedges_around_face(halfedge(f, input), input)) {
+        const Input_face g = face(opposite(h, input), input);
+        const auto it = std::lower_bound(index.begin(), index.end(), std::make_pair(g, 0u));
+        across[k++] =
+            g == boost::graph_traits<InputMesh>::null_face() || it == index.end() || it->first != g
+                ? kNoNeighbour
+                : it->second;
+      }
+      m_input_neighbours[i] = across;
+    }
+    m_flat_state.assign(m_input_corners.size(), {0, 0});
     m_tree.rebuild(m_input.begin(), m_input.end());
     m_tree.accelerate_distance_queries();
   }
@@ -208,7 +233,11 @@ class Hausdorff_tracker {
   Optional<Eigen::Vector3d> choose(const Profile& profile,
                                    const std::vector<Eigen::Vector3d>& candidates,
                                    const Acceptable& acceptable) {
-    commit_pending();
+    // A choice still pending was not collapsed, unless nothing calls commit() (defer_commits).
+    if (m_deferred_commits)
+      commit_pending();
+    else
+      m_pending.active = false;
     const Patch patch =
         make_patch(profile.surface_mesh(), profile.vertex_point_map(), profile.v0(), profile.v1());
     if (frozen(patch)) return {};
@@ -218,15 +247,20 @@ class Hausdorff_tracker {
       std::size_t index;
     };
     std::vector<Ranked> ranked;
+    const Eigen::Vector3d p0 = to_eigen(profile.p0()), p1 = to_eigen(profile.p1());
+    const std::size_t hint0 = get(m_distance, profile.v0()).triangle,
+                      hint1 = get(m_distance, profile.v1()).triangle;
     double best = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < candidates.size(); ++i) {
       const Eigen::Vector3d& p = candidates[i];
-      const Reference_sample d = patch_reference_sample(patch, p);
-      if (d.distance > m_tolerance || !acceptable(p)) continue;
+      // The cheapest refusals first: the pieces' corners, the flip check, then p's distance.
       const double stop = (std::min)(best, m_tolerance);
-      const double bound = (std::max)(
-          d.distance,
-          corner_distance_lower_bound(patch.pieces, moved(patch, p), stop, kRankingPieces));
+      const double pieces_bound =
+          corner_distance_lower_bound(patch.pieces, moved(patch, p), stop, kRankingPieces);
+      if (pieces_bound > m_tolerance || !acceptable(p)) continue;
+      const bool nearer_v0 = (p - p0).squaredNorm() <= (p - p1).squaredNorm();
+      const Reference_sample d = patch_reference_sample(patch, p, nearer_v0 ? hint0 : hint1);
+      const double bound = (std::max)(d.distance, pieces_bound);
       if (bound > m_tolerance) continue;
       best = (std::min)(best, bound);
       ranked.push_back({bound, d, i});
@@ -249,6 +283,10 @@ class Hausdorff_tracker {
     }
     return {};
   }
+
+  // For a filter used alone, whose collapses nobody reports: what choose() accepted is taken as
+  // collapsed when the next choice is asked for.
+  void defer_commits() { m_deferred_commits = true; }
 
   // After the collapse chose(): moves the kept vertex to the chosen point when asked, and attaches
   // the pieces of the old patch to the new faces.
@@ -289,7 +327,7 @@ class Hausdorff_tracker {
     commit_pending();
     const Patch patch = make_patch(tm, vpm, v, v);
     if (frozen(patch)) return false;
-    const Reference_sample d = patch_reference_sample(patch, p);
+    const Reference_sample d = patch_reference_sample(patch, p, get(m_distance, v).triangle);
     std::vector<Piece_cover> covers;
     if (d.distance > m_tolerance || !certify(patch, p, d, covers)) return false;
     m_pending.active = true;
@@ -329,10 +367,34 @@ class Hausdorff_tracker {
     put(m_face_pieces, f, std::move(list));
   }
 
-  // The input point nearest to p; the previous answer seeds the search, as queries come in
-  // clusters.
-  Reference_sample reference_sample(const Eigen::Vector3d& p) const {
+  // The distance from p to an input triangle near it, an upper bound of its distance to the input:
+  // a walk across the input's edges from the triangle `hint` while the distance drops, which is
+  // exact on most of a smooth surface. When it ends farther than kWalkShare * tolerance, the input
+  // point nearest to p, from the AABB tree seeded with the walk's end (or the previous answer).
+  Reference_sample reference_sample(const Eigen::Vector3d& p,
+                                    std::size_t hint = Reference_sample::kNoTriangle) const {
     const auto query = search_point(p);
+    if (hint != Reference_sample::kNoTriangle) {
+      std::uint32_t at = std::uint32_t(hint);
+      double d2 = squared_distance_to_triangle(p, m_input_corners[at]);
+      for (std::size_t step = 0; step < kWalkSteps; ++step) {
+        const std::uint32_t from = at;
+        for (const std::uint32_t j : m_input_neighbours[from]) {
+          if (j == kNoNeighbour) continue;
+          const double e2 = squared_distance_to_triangle(p, m_input_corners[j]);
+          if (e2 < d2) {
+            d2 = e2;
+            at = j;
+          }
+        }
+        if (at == from) break;
+      }
+      const double near = kWalkShare * m_tolerance;
+      if (d2 <= near * near) return {std::sqrt(d2), at};
+      const auto primitive = m_input.cbegin() + at;
+      m_hint = {Search_kernel().construct_projected_point_3_object()(*primitive, query), primitive};
+      m_has_hint = true;
+    }
     const auto nearest = m_has_hint ? m_tree.closest_point_and_primitive(query, m_hint)
                                     : m_tree.closest_point_and_primitive(query);
     m_hint = nearest;
@@ -341,26 +403,58 @@ class Hausdorff_tracker {
             std::size_t(nearest.second - m_input.cbegin())};
   }
 
-  // Whether t is within the tolerance of a flat part of the input (flat_region_covers).
-  bool flat_covers(const Triangle_corners& t) const {
-    CGAL::Bbox_3 box;
-    for (const Eigen::Vector3d& p : t) box += search_point(p).bbox();
-    const double r = m_tolerance;
-    const CGAL::Bbox_3 grown(box.xmin() - r, box.ymin() - r, box.zmin() - r, box.xmax() + r,
-                             box.ymax() + r, box.zmax() + r);
-    std::vector<typename Search_triangles::const_iterator> found;
-    m_tree.all_intersected_primitives(grown, std::back_inserter(found));
-    if (found.size() > kFlatSearchLimit) return false;
-    std::vector<const Triangle_corners*> nearby;
-    for (const auto it : found)
-      nearby.push_back(&m_input_corners[std::size_t(it - m_input.cbegin())]);
-    std::sort(nearby.begin(), nearby.end());  // the tree's order is not the input's
-    return flat_region_covers(t, nearby, m_tolerance);
+  // Whether t is within the tolerance of a flat part of the input (Flat_frame). K grows from
+  // input triangles near t's corners across the input's edges, through the triangles that
+  // hold the flatness argument and whose projection may meet t's; an edge of K to a triangle that
+  // does not hold it, or to none, must not cross t. An edge to a triangle whose projection misses
+  // t's cannot.
+  bool flat_covers(const Sampled_triangle& t) const {
+    const Flat_frame frame(t.corners, m_tolerance);
+    if (!frame.valid()) return false;
+    enum : std::uint8_t { outside, kept, rejected };
+    ++m_flat_stamp;
+    m_flat_stack.clear();
+    const auto visit = [&](std::uint32_t j) {
+      auto& [stamp, state] = m_flat_state[j];
+      if (stamp != m_flat_stamp) {
+        stamp = m_flat_stamp;
+        const Triangle_corners& q = m_input_corners[j];
+        state = !frame.may_meet(q) ? outside : frame.holds(q) ? kept : rejected;
+        if (state == kept) m_flat_stack.push_back(j);
+      }
+      return state;
+    };
+    // Seeds: the triangles nearest to t's corners, or, when one does not hold the argument (a
+    // corner on a crease may be nearest to the far side), the two rings of triangles around it.
+    for (const Reference_sample& s : t.samples) {
+      if (s.triangle == Reference_sample::kNoTriangle || visit(std::uint32_t(s.triangle)) == kept)
+        continue;
+      for (const std::uint32_t j : m_input_neighbours[s.triangle])
+        if (j != kNoNeighbour && visit(j) != kept)
+          for (const std::uint32_t k : m_input_neighbours[j])
+            if (k != kNoNeighbour) visit(k);
+    }
+    bool centroid = false;
+    for (std::size_t expanded = 0; !m_flat_stack.empty(); ++expanded) {
+      if (expanded == kFlatSearchLimit) return false;
+      const std::uint32_t i = m_flat_stack.back();
+      m_flat_stack.pop_back();
+      const Triangle_corners& q = m_input_corners[i];
+      centroid = centroid || frame.holds_centroid(q);
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t j = m_input_neighbours[i][k];
+        if ((j == kNoNeighbour || visit(j) == rejected) && frame.crosses(q[k], q[(k + 1) % 3]))
+          return false;
+      }
+    }
+    return centroid;
   }
 
   // The nearest point of the reference of this patch: the input, or the patch before the change.
-  Reference_sample patch_reference_sample(const Patch& patch, const Eigen::Vector3d& p) const {
-    if (m_options.reference == Hausdorff_reference::global) return reference_sample(p);
+  // `hint` is an input triangle near p (global reference).
+  Reference_sample patch_reference_sample(const Patch& patch, const Eigen::Vector3d& p,
+                                          std::size_t hint) const {
+    if (m_options.reference == Hausdorff_reference::global) return reference_sample(p, hint);
     Reference_sample nearest{std::numeric_limits<double>::infinity(), 0};
     for (std::size_t t = 0; t < patch.reference.size(); ++t) {
       const double d2 = squared_distance_to_triangle(p, patch.reference[t]);
@@ -443,7 +537,9 @@ class Hausdorff_tracker {
                std::vector<Piece_cover>& covers) const {
     const std::vector<Triangle_corners> after = moved(patch, p);
     const bool global = m_options.reference == Hausdorff_reference::global;
-    const auto sample = [&](const Eigen::Vector3d& x) { return patch_reference_sample(patch, x); };
+    const auto sample = [&](const Eigen::Vector3d& x, std::size_t hint) {
+      return patch_reference_sample(patch, x, hint);
+    };
     const auto reference = [&](std::size_t t) -> const Triangle_corners& {
       return global ? m_input_corners[t] : patch.reference[t];
     };
@@ -454,7 +550,7 @@ class Hausdorff_tracker {
         if (patch.moving[j][k]) d[k] = d_p;
       triangles.push_back({after[j], d});
     }
-    const auto flat = [&](const Triangle_corners& t) { return global && flat_covers(t); };
+    const auto flat = [&](const Sampled_triangle& t) { return global && flat_covers(t); };
     if (!triangles_within(std::move(triangles), m_tolerance, m_options.max_refinement,
                           kSampleBudget, sample, reference, flat))
       return false;
@@ -471,6 +567,10 @@ class Hausdorff_tracker {
   double m_tolerance = 0;
   Search_triangles m_input;
   std::vector<Triangle_corners> m_input_corners;
+  std::vector<std::array<std::uint32_t, 3>> m_input_neighbours;
+  mutable std::vector<std::pair<std::uint32_t, std::uint8_t>> m_flat_state;  // stamp, state
+  mutable std::uint32_t m_flat_stamp = 0;
+  mutable std::vector<std::uint32_t> m_flat_stack;
   Search_tree m_tree;
   mutable typename Search_tree::Point_and_primitive_id m_hint;
   mutable bool m_has_hint = false;
@@ -480,6 +580,7 @@ class Hausdorff_tracker {
   Distance_map m_distance;
   Order_map m_order;
   Pending m_pending;
+  bool m_deferred_commits = false;
 };
 
 }  // namespace internal

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 
 namespace cgal_policies {
 namespace internal {
@@ -31,7 +32,7 @@ double side_ratio(typename boost::graph_traits<TriangleMesh>::halfedge_descripto
 }
 
 // The angle between two unit normals in radians, from their difference: accurate near 0, where
-// acos is not, and cheaper than atan2 (it runs for every edge around every refreshed vertex).
+// acos is not, and cheaper than atan2 (it runs for every edge whose normals changed).
 inline double normal_angle(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   return 2 * std::asin((std::min)(1.0, 0.5 * (b - a).norm()));
 }
@@ -49,31 +50,64 @@ inline double normal_twist(const Eigen::Vector3d& p_v, const Eigen::Vector3d& n_
 }
 
 struct Normal_variation {
-  double mean_angle = 0;  // thbar(v), radians
-  double mean_twist = 0;  // T(v)
+  double angle = 0;  // radians
+  double twist = 0;  // absolute normal twist
 };
 
-// thbar(v), the mean angle between v's normal and its neighbours' normals, and T(v), the mean
-// absolute normal twist along the edges around v, in one pass. `normal` maps a vertex to its unit
-// normal.
+// The normal variation along h's edge: the angle between the normals of its ends and, when
+// `with_twist`, the absolute twist. Both are symmetric in the ends, so one value per edge serves
+// both of them. `normal` maps a vertex to its unit normal.
 template <typename TriangleMesh, typename VertexPointMap, typename NormalFunction>
-Normal_variation normal_variation(typename boost::graph_traits<TriangleMesh>::vertex_descriptor v,
-                                  const TriangleMesh& tm, const VertexPointMap& vpm,
-                                  const NormalFunction& normal) {
-  const Eigen::Vector3d p_v = to_eigen(get(vpm, v));
-  const Eigen::Vector3d n_v = normal(v);
-  Normal_variation sum;
-  std::size_t count = 0;
-  for (auto j : CGAL::vertices_around_target(halfedge(v, tm), tm)) {
-    const Eigen::Vector3d n_j = normal(j);
-    sum.mean_angle += normal_angle(n_v, n_j);
-    sum.mean_twist += std::abs(normal_twist(p_v, n_v, to_eigen(get(vpm, j)), n_j));
-    ++count;
+Normal_variation edge_normal_variation(
+    typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h, const TriangleMesh& tm,
+    const VertexPointMap& vpm, const NormalFunction& normal, bool with_twist) {
+  const auto v = source(h, tm), j = target(h, tm);
+  const Eigen::Vector3d n_v = normal(v), n_j = normal(j);
+  Normal_variation variation;
+  variation.angle = normal_angle(n_v, n_j);
+  if (with_twist)
+    variation.twist =
+        std::abs(normal_twist(to_eigen(get(vpm, v)), n_v, to_eigen(get(vpm, j)), n_j));
+  return variation;
+}
+
+// Sums of edge angles and twists in fixed point (units of 2^-44, about 6e-14), with their number
+// of edges. Integer sums do not depend on the order of their terms, so a sum updated term by term
+// after each collapse is exactly the sum computed afresh.
+struct Normal_variation_sum {
+  static constexpr double unit = 0x1p-44;
+  std::int64_t angle = 0;
+  std::int64_t twist = 0;
+  std::int64_t count = 0;
+
+  // The one term of an edge.
+  static Normal_variation_sum of(const Normal_variation& variation) {
+    return {std::llround(variation.angle / unit), std::llround(variation.twist / unit), 1};
   }
-  if (count > 0) {
-    sum.mean_angle /= double(count);
-    sum.mean_twist /= double(count);
+  Normal_variation_sum& operator+=(const Normal_variation_sum& other) {
+    angle += other.angle;
+    twist += other.twist;
+    count += other.count;
+    return *this;
   }
+  Normal_variation_sum& operator-=(const Normal_variation_sum& other) {
+    angle -= other.angle;
+    twist -= other.twist;
+    count -= other.count;
+    return *this;
+  }
+  double mean_angle() const { return count > 0 ? double(angle) * unit / double(count) : 0.0; }
+  double mean_twist() const { return count > 0 ? double(twist) * unit / double(count) : 0.0; }
+};
+
+// The sum over the edges around v whose means are thbar(v) and T(v). `edge_term` maps a halfedge to
+// the Normal_variation_sum::of its edge.
+template <typename TriangleMesh, typename EdgeTerm>
+Normal_variation_sum normal_variation_sum(
+    typename boost::graph_traits<TriangleMesh>::vertex_descriptor v, const TriangleMesh& tm,
+    const EdgeTerm& edge_term) {
+  Normal_variation_sum sum;
+  for (auto h : CGAL::halfedges_around_target(halfedge(v, tm), tm)) sum += edge_term(h);
   return sum;
 }
 

@@ -68,94 +68,102 @@ inline double covering_radius(const Eigen::Vector3d& a, const Eigen::Vector3d& b
   return std::sqrt(e2[0] * e2[1] * e2[2]) / (2 * twice_area);
 }
 
-// The exact distance from a point to the reference, and the reference triangle where it is reached
-// (kNoTriangle when unknown).
+// The distance from a point to one triangle of the reference (kNoTriangle when unknown): an upper
+// bound of its distance to the reference, which is all the tests below need.
 struct Reference_sample {
   double distance = 0;
   std::size_t triangle = kNoTriangle;
   static constexpr std::size_t kNoTriangle = std::size_t(-1);
 };
 
-// True when every point of triangle t is within `limit` of the union of `nearby` reference
-// triangles for a reason sampling cannot see, flatness: the triangles that lie within `limit` of
-// t's plane and face its way project onto that plane without folding, and when their projection
-// covers t's (t's corners inside, none of their boundary edges crossing t), the point of the union
-// above any point of t is within `limit` of it. `nearby` must hold every reference triangle that
-// meets t's bounding box grown by `limit`.
-inline bool flat_region_covers(const Triangle_corners& t,
-                               const std::vector<const Triangle_corners*>& nearby, double limit) {
-  const Eigen::Vector3d normal = (t[1] - t[0]).cross(t[2] - t[0]);
-  const double twice_area = normal.norm();
-  if (!(twice_area > 0)) return false;
-  const Eigen::Vector3d n = normal / twice_area;
-  const Eigen::Vector3d u = (t[1] - t[0]).normalized(), w = n.cross(u);
-  const auto flat = [&](const Eigen::Vector3d& p) {
-    const Eigen::Vector3d d = p - t[0];
-    return Eigen::Vector2d(d.dot(u), d.dot(w));
-  };
-  using Key = std::array<double, 6>;
-  std::vector<std::array<Eigen::Vector2d, 3>> kept;
-  std::vector<std::pair<Key, std::array<Eigen::Vector2d, 2>>> edges;
-  for (const Triangle_corners* r : nearby) {
-    const Triangle_corners& q = *r;
-    if (std::abs((q[0] - t[0]).dot(n)) > limit || std::abs((q[1] - t[0]).dot(n)) > limit ||
-        std::abs((q[2] - t[0]).dot(n)) > limit || !((q[1] - q[0]).cross(q[2] - q[0]).dot(n) > 0))
-      continue;
-    kept.push_back({flat(q[0]), flat(q[1]), flat(q[2])});
-    for (int k = 0; k < 3; ++k) {
-      const Eigen::Vector3d &a = q[k], &b = q[(k + 1) % 3];
-      const bool ordered =
-          std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
-      const Eigen::Vector3d &lo = ordered ? a : b, &hi = ordered ? b : a;
-      edges.push_back({{lo.x(), lo.y(), lo.z(), hi.x(), hi.y(), hi.z()}, {flat(a), flat(b)}});
-    }
+// The plane of a triangle t seen from above, for the flatness argument: reference triangles that
+// lie within `limit` of t's plane and face its way project onto it without folding, and when the
+// projection of a set K of them covers t's, the point of K above any point of t is within `limit`
+// of it. The projection covers t's when it holds t's centroid and no edge of K that is not shared
+// by two triangles of K crosses the inside of t: a point of t left uncovered would be cut off from
+// the centroid by such an edge.
+class Flat_frame {
+ public:
+  Flat_frame(const Triangle_corners& t, double limit) : m_origin(t[0]), m_limit(limit) {
+    const Eigen::Vector3d normal = (t[1] - t[0]).cross(t[2] - t[0]);
+    const double twice_area = normal.norm();
+    m_valid = twice_area > 0;
+    if (!m_valid) return;
+    m_n = normal / twice_area;
+    m_u = (t[1] - t[0]).normalized();
+    m_w = m_n.cross(m_u);
+    m_scale = std::sqrt(twice_area);
+    for (int k = 0; k < 3; ++k) m_t[k] = project(t[k]);
+    m_centroid = (m_t[0] + m_t[1] + m_t[2]) / 3;
+    m_min = m_t[0].cwiseMin(m_t[1]).cwiseMin(m_t[2]);
+    m_max = m_t[0].cwiseMax(m_t[1]).cwiseMax(m_t[2]);
   }
-  const auto cross = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    return a.x() * b.y() - a.y() * b.x();
-  };
-  const std::array<Eigen::Vector2d, 3> tt = {flat(t[0]), flat(t[1]), flat(t[2])};
-  for (const Eigen::Vector2d& corner : tt) {
-    bool inside = false;
-    for (const auto& q : kept)
-      if (cross(q[1] - q[0], corner - q[0]) >= 0 && cross(q[2] - q[1], corner - q[1]) >= 0 &&
-          cross(q[0] - q[2], corner - q[2]) >= 0) {
-        inside = true;
-        break;
-      }
-    if (!inside) return false;
-  }
-  // Boundary edges of the kept triangles belong to one of them only.
-  std::sort(edges.begin(), edges.end(),
-            [](const auto& a, const auto& b) { return a.first < b.first; });
-  const double scale = std::sqrt(twice_area);
-  for (std::size_t i = 0; i < edges.size();) {
-    std::size_t j = i + 1;
-    while (j < edges.size() && edges[j].first == edges[i].first) ++j;
-    if (j - i == 1) {
-      // Clip the segment to the open triangle (counter-clockwise in the frame): a part of
-      // positive length inside means the region's border crosses t.
-      const Eigen::Vector2d a = edges[i].second[0], d = edges[i].second[1] - a;
-      double lo = 0, hi = 1;
-      for (int k = 0; k < 3 && lo < hi; ++k) {
-        const Eigen::Vector2d e = tt[(k + 1) % 3] - tt[k];
-        const double at = cross(e, a - tt[k]), slope = cross(e, d);
-        const double margin = 1e-12 * scale * e.norm();
-        if (slope == 0) {
-          if (at <= margin) hi = lo;
-        } else if (slope > 0) {
-          lo = (std::max)(lo, (margin - at) / slope);
-        } else {
-          hi = (std::min)(hi, (margin - at) / slope);
-        }
-      }
-      if (hi - lo > 1e-12) return false;
-    }
-    i = j;
-  }
-  return true;
-}
 
-// A triangle of a patch with the exact reference samples at its corners.
+  bool valid() const { return m_valid; }
+
+  // Whether q's projection may meet t's: when not, no edge of q crosses t.
+  bool may_meet(const Triangle_corners& q) const {
+    Eigen::Vector2d lo = project(q[0]), hi = lo;
+    for (int k = 1; k < 3; ++k) {
+      const Eigen::Vector2d p = project(q[k]);
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+    return (lo.array() <= m_max.array()).all() && (hi.array() >= m_min.array()).all();
+  }
+
+  // Whether q is within `limit` of t's plane and faces its way.
+  bool holds(const Triangle_corners& q) const {
+    for (const Eigen::Vector3d& p : q)
+      if (std::abs((p - m_origin).dot(m_n)) > m_limit) return false;
+    return (q[1] - q[0]).cross(q[2] - q[0]).dot(m_n) > 0;
+  }
+
+  // Whether q's projection holds t's centroid (q must face t's way).
+  bool holds_centroid(const Triangle_corners& q) const {
+    const Eigen::Vector2d a = project(q[0]), b = project(q[1]), c = project(q[2]);
+    return cross(b - a, m_centroid - a) >= 0 && cross(c - b, m_centroid - b) >= 0 &&
+           cross(a - c, m_centroid - c) >= 0;
+  }
+
+  // Whether the segment ab has a part of positive length inside t (in projection), clipped to t
+  // shrunk by a rounding margin.
+  bool crosses(const Eigen::Vector3d& a3, const Eigen::Vector3d& b3) const {
+    const Eigen::Vector2d a = project(a3), d = project(b3) - a;
+    double lo = 0, hi = 1;
+    for (int k = 0; k < 3 && lo < hi; ++k) {
+      const Eigen::Vector2d e = m_t[(k + 1) % 3] - m_t[k];
+      const double at = cross(e, a - m_t[k]), slope = cross(e, d);
+      const double margin = 1e-12 * m_scale * e.norm();
+      if (slope == 0) {
+        if (at <= margin) hi = lo;
+      } else if (slope > 0) {
+        lo = (std::max)(lo, (margin - at) / slope);
+      } else {
+        hi = (std::min)(hi, (margin - at) / slope);
+      }
+    }
+    return hi - lo > 1e-12;
+  }
+
+ private:
+  static double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return a.x() * b.y() - a.y() * b.x();
+  }
+  Eigen::Vector2d project(const Eigen::Vector3d& p) const {
+    const Eigen::Vector3d d = p - m_origin;
+    return {d.dot(m_u), d.dot(m_w)};
+  }
+
+  Eigen::Vector3d m_origin, m_n, m_u, m_w;
+  double m_limit;
+  double m_scale = 0;
+  bool m_valid = false;
+  std::array<Eigen::Vector2d, 3> m_t;
+  Eigen::Vector2d m_centroid, m_min, m_max;
+};
+
+// A triangle of a patch with the reference samples at its corners.
 struct Sampled_triangle {
   Triangle_corners corners;
   std::array<Reference_sample, 3> samples;
@@ -164,11 +172,11 @@ struct Sampled_triangle {
 // True when every point of the triangles is provably within `limit` of the reference: a triangle
 // passes when its farthest corner plus its covering radius stays within (the distance is
 // 1-Lipschitz), or when one reference triangle is within `limit` of all three corners (the
-// distance to a triangle is convex); the others are split in four, `sample(x)` giving the new
-// corners, at most `depth` times and for at most `budget` samples in all; whole triangles may also
-// pass `flat(corners)`. The grid is refined level
-// by level, so a point farther than `limit` refuses early (exact); running out of levels or
-// samples refuses too (conservative). `reference(t)` gives reference triangle t.
+// distance to a triangle is convex); the others are split in four, `sample(x, hint)` giving the new
+// corners, at most `depth` times and for at most `budget` samples in all; a triangle of any level
+// may also pass `flat(triangle)`. The grid is refined level by level, so a point farther than
+// `limit` refuses early (exact); running out of levels or samples refuses too (conservative).
+// `reference(t)` gives reference triangle t.
 template <typename Sample, typename Reference, typename Flat>
 bool triangles_within(std::vector<Sampled_triangle> level, double limit, int depth,
                       std::size_t budget, const Sample& sample, const Reference& reference,
@@ -196,12 +204,13 @@ bool triangles_within(std::vector<Sampled_triangle> level, double limit, int dep
           break;
         }
       }
-      if (covered || (d == 0 && flat(t.corners))) continue;
+      if (covered || flat(t)) continue;
       if (d == depth || budget < 3) return false;
       budget -= 3;
       const Eigen::Vector3d ab = 0.5 * (a + b), bc = 0.5 * (b + c), ca = 0.5 * (c + a);
-      const Reference_sample sab = sample(ab), sbc = sample(bc), sca = sample(ca);
       const auto& s = t.samples;
+      const Reference_sample sab = sample(ab, s[0].triangle), sbc = sample(bc, s[1].triangle),
+                             sca = sample(ca, s[2].triangle);
       next.push_back({{a, ab, ca}, {s[0], sab, sca}});
       next.push_back({{ab, b, bc}, {sab, s[1], sbc}});
       next.push_back({{ca, bc, c}, {sca, sbc, s[2]}});
