@@ -43,9 +43,7 @@ constexpr std::size_t kRankingPieces = 32;
 constexpr std::size_t kSampleBudget = 600;
 // Only the best few candidates are put to the full test: the others rarely pass when they fail.
 constexpr std::size_t kMaxCertified = 3;
-// A walk on the input that ends within this share of the tolerance is taken as it is (an upper
-// bound is all the tests need); farther, the exact distance is looked up.
-constexpr double kWalkShare = 1.0;
+// A walk on the input toward a point stops after this many steps (see reference_sample).
 constexpr std::size_t kWalkSteps = 64;
 // The flatness argument gives up after this many input triangles.
 constexpr std::size_t kFlatSearchLimit = 2000;
@@ -369,8 +367,9 @@ class Hausdorff_tracker {
 
   // The distance from p to an input triangle near it, an upper bound of its distance to the input:
   // a walk across the input's edges from the triangle `hint` while the distance drops, which is
-  // exact on most of a smooth surface. When it ends farther than kWalkShare * tolerance, the input
-  // point nearest to p, from the AABB tree seeded with the walk's end (or the previous answer).
+  // exact on most of a smooth surface; an upper bound is all the tests need. When it ends farther
+  // than the tolerance, the input point nearest to p, from the AABB tree seeded with the walk's end
+  // (or the previous answer).
   Reference_sample reference_sample(const Eigen::Vector3d& p,
                                     std::size_t hint = Reference_sample::kNoTriangle) const {
     const auto query = search_point(p);
@@ -389,8 +388,7 @@ class Hausdorff_tracker {
         }
         if (at == from) break;
       }
-      const double near = kWalkShare * m_tolerance;
-      if (d2 <= near * near) return {std::sqrt(d2), at};
+      if (d2 <= m_tolerance * m_tolerance) return {std::sqrt(d2), at};
       const auto primitive = m_input.cbegin() + at;
       m_hint = {Search_kernel().construct_projected_point_3_object()(*primitive, query), primitive};
       m_has_hint = true;
