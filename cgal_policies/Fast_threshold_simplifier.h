@@ -14,7 +14,7 @@
 // - A collapse is refused when it breaks the link condition (which the report's method lacks: a
 //   manifold input gives a manifold output), when it turns a surviving face normal by more than
 //   max_normal_angle_deg, or when it makes a needle or a sliver (twice the area over the squared
-//   longest edge below 1e-3 and below the face's own before); a face already degenerate in the
+//   longest edge below 1e-6 and below the face's own before); a face already degenerate in the
 //   input does not block the collapses that remove it. A border vertex only moves along the
 //   border (an edge from the interior keeps the border end in place).
 // - Lossless mode: only collapses of error zero up to round-off (1e-14 D^2).
