@@ -83,7 +83,8 @@ TEST(HausdorffBoundedPlacement, FlatGridAcceptsEveryInteriorCollapse) {
 // The same policy is asked about every edge with no collapse in between: an accepted choice that
 // was not collapsed must not be taken as done (two edges were refused here while it was).
 TEST(HausdorffBoundedPlacement, FlatGridAcceptsEveryInteriorCollapseAtSmallTolerances) {
-  for (double beta : {0.01, 0.05, 0.1}) expect_every_interior_collapse_accepted(beta);
+  for (double beta : {0.0001, 0.001, 0.01, 0.05, 0.1})
+    expect_every_interior_collapse_accepted(beta);
 }
 
 TEST(HausdorffBoundedPlacement, BentGridRefusesTheCollapseAcrossTheBendBelowItsHeight) {

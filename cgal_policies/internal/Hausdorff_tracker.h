@@ -553,10 +553,14 @@ class Hausdorff_tracker {
                           kSampleBudget, sample, reference, flat))
       return false;
     std::size_t hint = 0;
-    for (std::size_t i = 0; i < patch.pieces.size(); ++i)
-      if (!cover_piece(patch.pieces[i], patch.piece_sources[i], after, m_tolerance,
-                       m_options.max_refinement, hint, covers))
-        return false;
+    for (std::size_t i = 0; i < patch.pieces.size(); ++i) {
+      const std::size_t before = covers.size();
+      if (cover_piece(patch.pieces[i], patch.piece_sources[i], after, m_tolerance,
+                      m_options.max_refinement, hint, covers))
+        continue;
+      covers.resize(before);
+      if (!cover_piece_along_fan(patch.pieces[i], after, p, m_tolerance, covers)) return false;
+    }
     return true;
   }
 
