@@ -87,6 +87,46 @@ TEST(HausdorffBoundedPlacement, FlatGridAcceptsEveryInteriorCollapseAtSmallToler
     expect_every_interior_collapse_accepted(beta);
 }
 
+// The cut along a fan, directly: a fan of four right triangles around (1, 1) tiles the square
+// [0, 2]^2. A piece inside it that straddles all four is cut into parts that tile it exactly, each
+// over its own triangle; halving alone cannot cover it within 1e-9. A piece that reaches out of the
+// square is refused, and so is one seen from below (the fan faces away from it).
+TEST(HausdorffBoundedPlacement, APieceIsCutExactlyAlongACoplanarFan) {
+  using cgal_policies::internal::Piece_cover;
+  using cgal_policies::internal::Triangle_corners;
+  using V = Eigen::Vector3d;
+  const V apex(1, 1, 0);
+  const std::vector<Triangle_corners> fan = {{apex, V(0, 0, 0), V(2, 0, 0)},
+                                             {apex, V(2, 0, 0), V(2, 2, 0)},
+                                             {apex, V(2, 2, 0), V(0, 2, 0)},
+                                             {apex, V(0, 2, 0), V(0, 0, 0)}};
+  const double limit = 1e-9;
+  const Triangle_corners piece = {V(0.2, 0.3, 0), V(1.7, 0.4, 0), V(0.9, 1.8, 0)};
+  std::vector<Piece_cover> covers;
+  std::size_t hint = 0;
+  EXPECT_FALSE(cgal_policies::internal::cover_piece(piece, 0, fan, limit, 5, hint, covers));
+  covers.clear();
+  ASSERT_TRUE(cgal_policies::internal::cover_piece_along_fan(piece, fan, apex, limit, covers));
+  double area = 0;
+  std::vector<bool> used(fan.size(), false);
+  for (const Piece_cover& c : covers) {
+    area += 0.5 * (c.piece[1] - c.piece[0]).cross(c.piece[2] - c.piece[0]).norm();
+    used[c.triangle] = true;
+    for (const V& corner : c.piece)
+      EXPECT_LE(cgal_policies::internal::squared_distance_to_triangle(corner, fan[c.triangle]),
+                limit * limit);
+  }
+  EXPECT_NEAR(area, 0.5 * (piece[1] - piece[0]).cross(piece[2] - piece[0]).norm(), 1e-12);
+  EXPECT_EQ(used, std::vector<bool>(fan.size(), true));
+
+  covers.clear();
+  const Triangle_corners beyond = {V(0.2, 0.3, 0), V(2.5, 0.4, 0), V(0.9, 1.8, 0)};
+  EXPECT_FALSE(cgal_policies::internal::cover_piece_along_fan(beyond, fan, apex, limit, covers));
+  const Triangle_corners below = {piece[0], piece[2], piece[1]};
+  EXPECT_FALSE(cgal_policies::internal::cover_piece_along_fan(below, fan, apex, limit, covers));
+  EXPECT_TRUE(covers.empty());
+}
+
 TEST(HausdorffBoundedPlacement, BentGridRefusesTheCollapseAcrossTheBendBelowItsHeight) {
   // The interior edge from (1, 2) up to the ridge vertex (2, 2): whichever point the merged vertex
   // takes, the bend is cut or the flat part is lifted by a good part of the height.

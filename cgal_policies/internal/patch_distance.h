@@ -270,12 +270,14 @@ inline bool cover_piece_along_fan(const Triangle_corners& piece,
   const double twice_area = normal.norm();
   if (!(twice_area > 0)) return false;
   const Eigen::Vector3d n = normal / twice_area;
-  const auto flat = [&n](const Eigen::Vector3d& v) -> Eigen::Vector3d { return v - v.dot(n) * n; };
+  const auto in_plane = [&n](const Eigen::Vector3d& v) -> Eigen::Vector3d {
+    return v - v.dot(n) * n;
+  };
   double turn = 0;
   for (const Triangle_corners& t : fan) {
     const int k = int(std::find(t.begin(), t.end(), apex) - t.begin());
     if (k == 3) return false;
-    const Eigen::Vector3d u = flat(t[(k + 1) % 3] - apex), w = flat(t[(k + 2) % 3] - apex);
+    const Eigen::Vector3d u = in_plane(t[(k + 1) % 3] - apex), w = in_plane(t[(k + 2) % 3] - apex);
     const double sine = u.cross(w).dot(n);
     if (!(sine > 0)) return false;
     turn += std::atan2(sine, u.dot(w));
