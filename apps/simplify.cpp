@@ -87,10 +87,11 @@ std::size_t target_face_count(std::optional<double> ratio, std::optional<double>
 // --snapshot OUT.png [--size WxH], checked before anything is read or written. The picture is
 // rendered before OUT is written and removed again if OUT cannot be written: a failed run leaves
 // neither new file, and an OUT that existed before is only replaced once the picture exists.
-#ifdef CGAL_POLICIES_WITH_VIEWER
 struct Snapshot_request {
   std::string png;
+#ifdef CGAL_POLICIES_WITH_VIEWER
   Snapshot_settings settings;
+#endif
 };
 
 std::optional<Snapshot_request> take_snapshot_options(Command_line& cli) {
@@ -98,18 +99,26 @@ std::optional<Snapshot_request> take_snapshot_options(Command_line& cli) {
   const std::optional<std::string> size = cli.take_value("size");
   if (size && !png) throw App_error(exit_usage, "--size goes with --snapshot");
   if (!png) return std::nullopt;
+#ifdef CGAL_POLICIES_WITH_VIEWER
   // A .png is never a mesh, so never IN or OUT.
   if (std::filesystem::path(*png).extension() != ".png")
     throw App_error(exit_usage, *png + ": the snapshot must be a .png file");
   Snapshot_request request{*png, {}};
   if (size) parse_snapshot_size(*size, request.settings);
   return request;
+#else
+  throw App_error(exit_usage, *png +
+                                  ": --snapshot is not in this build (mesh_viewer's packages "
+                                  "were missing when it was configured)");
+#endif
 }
 
-void write_mesh_and_snapshot(const Mesh& original, const Mesh& simplified,
-                             const std::string& policy_name,
-                             const std::optional<Snapshot_request>& snapshot,
+// Without the viewer, take_snapshot_options refuses every picture: only the mesh is written.
+void write_mesh_and_snapshot([[maybe_unused]] const Mesh& original, const Mesh& simplified,
+                             [[maybe_unused]] const std::string& policy_name,
+                             [[maybe_unused]] const std::optional<Snapshot_request>& snapshot,
                              const std::string& output) {
+#ifdef CGAL_POLICIES_WITH_VIEWER
   if (snapshot) {
     Snapshot_settings settings = snapshot->settings;
     caption_snapshot(original, simplified, policy_name, settings);
@@ -122,29 +131,10 @@ void write_mesh_and_snapshot(const Mesh& original, const Mesh& simplified,
     if (snapshot) std::filesystem::remove(snapshot->png, ignored);
     throw;
   }
-}
 #else
-struct Snapshot_request {
-  std::string png;
-};
-
-std::optional<Snapshot_request> take_snapshot_options(Command_line& cli) {
-  const std::optional<std::string> png = cli.take_value("snapshot");
-  const std::optional<std::string> size = cli.take_value("size");
-  if (size && !png) throw App_error(exit_usage, "--size goes with --snapshot");
-  if (png)
-    throw App_error(exit_usage, *png +
-                                    ": --snapshot is not in this build (mesh_viewer's packages "
-                                    "were missing when it was configured)");
-  return std::nullopt;
-}
-
-// take_snapshot_options refuses every picture in this build.
-void write_mesh_and_snapshot(const Mesh&, const Mesh& simplified, const std::string&,
-                             const std::optional<Snapshot_request>&, const std::string& output) {
   write_mesh_atomically(simplified, output);
-}
 #endif
+}
 
 int run(int argc, char** argv) {
   Command_line cli(argc, argv);

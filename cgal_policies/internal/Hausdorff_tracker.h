@@ -410,7 +410,10 @@ class Hausdorff_tracker {
     const Flat_frame frame(t.corners, m_tolerance);
     if (!frame.valid()) return false;
     enum : std::uint8_t { outside, kept, rejected };
-    ++m_flat_stamp;
+    if (++m_flat_stamp == 0) {  // wrapped: stale stamps would pass for current ones
+      std::fill(m_flat_state.begin(), m_flat_state.end(), std::make_pair(0u, std::uint8_t(0)));
+      m_flat_stamp = 1;
+    }
     m_flat_stack.clear();
     const auto visit = [&](std::uint32_t j) {
       auto& [stamp, state] = m_flat_state[j];
