@@ -1,5 +1,5 @@
-// curvature_report INPUT A B: where two simplifications of INPUT put their faces (policies.md §1:
-// "measure where the faces go, curved vs flat"). Prints one JSON object.
+// curvature_report INPUT A B: where two simplifications of INPUT put their faces
+// (docs/curvature.md: "measure where the faces go, curved vs flat"). Prints one JSON object.
 //
 // - The curved quarter: INPUT's faces ranked by the approximate curvature of Zhang et al. (eq.
 //   9-10; a face takes the mean K of its corners, lower is more curved), most curved first, until

@@ -1,5 +1,5 @@
-// mesh_error A B: Metro-style two-sided distances between two meshes (evaluation.md), A being the
-// reference, and the validity figures of B.
+// mesh_error A B: Metro-style two-sided distances between two meshes (docs/evaluation.md), A being
+// the reference, and the validity figures of B.
 #include "common/App_error.h"
 #include "common/Command_line.h"
 #include "common/Json_object.h"

@@ -1,4 +1,4 @@
-// simplify IN OUT [RATIO]: simplifies a mesh with any policy of the suite (DESIGN.md).
+// simplify IN OUT [RATIO]: simplifies a mesh with any policy of the suite (see README.md).
 #include "common/App_error.h"
 #include "common/Command_line.h"
 #include "common/Json_object.h"
@@ -59,14 +59,8 @@ void print_help() {
          "  --quiet               no progress bar, no summary\n"
          "  --help                this text\n\n"
          "Policy options (all lengths are fractions of IN's bounding-box diagonal):\n";
-  for (const Policy_entry& p : policy_registry()) {
-    std::cout << "  " << p.name << ": " << p.summary << '\n';
-    for (const Policy_option& o : p.options)
-      std::cout << "      --" << o.name << (o.is_flag ? "" : " X") << "  " << o.help
-                << (o.is_flag ? ""
-                              : " (default " + Json_object::format_number(o.default_value) + ")")
-                << '\n';
-  }
+  for (const Policy_entry& p : policy_registry())
+    std::cout << "  " << p.name << ": " << p.summary << '\n' << policy_options_help(p);
   std::cout
       << "\nExit codes: 0 done, 1 not done, 2 bad usage, 3 bad input, 4 output not written.\n";
 }
@@ -156,6 +150,9 @@ int run(int argc, char** argv) {
   const bool json = cli.take_flag("json"), measure = cli.take_flag("measure"),
              force = cli.take_flag("force"), quiet = cli.take_flag("quiet");
   if (max_error && !(*max_error > 0)) throw App_error(exit_usage, "--max-error must be positive");
+  if (max_error && !policy->takes_error_bound)
+    throw App_error(exit_usage, "--max-error needs an edge-collapse policy; " + policy->name +
+                                    " runs its own engine (try classic)");
   settings.max_error = max_error.value_or(0.0);
   const std::vector<std::string> args = cli.positionals();
   if (args.size() < 2 || args.size() > 3)
@@ -165,10 +162,9 @@ int run(int argc, char** argv) {
     ratio = parse_number(args[2], "RATIO");
   }
   if (samples && !(*samples >= 1)) throw App_error(exit_usage, "--samples must be at least 1");
-  const auto tolerance_option = settings.options.find("tolerance");
   const double smoothing_tolerance = max_error ? *max_error
-                                     : tolerance_option != settings.options.end()
-                                         ? tolerance_option->second
+                                     : !policy->bound_option.empty()
+                                         ? settings.options.at(policy->bound_option)
                                          : 0.0;
   if (smoothing.bounded && !(smoothing_tolerance > 0))
     throw App_error(exit_usage, "--smooth-bounded needs --max-error (or a policy's --tolerance)");
@@ -185,7 +181,7 @@ int run(int argc, char** argv) {
   const std::size_t input_vertices = mesh.number_of_vertices();
   settings.target_faces = target_face_count(ratio, faces, input_faces);
   const Mesh original = measure || smoothing.bounded || snapshot ? mesh : Mesh();
-  // The pre-pass (policies.md §0, pair contraction) is not part of the simplification's time.
+  // The pre-pass (docs/quadric_core.md, pair contraction) is not part of the simplification's time.
   const cgal_policies::Border_pair_contraction_report merge_report =
       cgal_policies::Border_pair_contraction(merge_distance)(mesh);
   if (merge_report.stitched_edges > 0) mesh.collect_garbage();
@@ -197,8 +193,6 @@ int run(int argc, char** argv) {
     outcome = policy->run(mesh, settings);
   }
   mesh.collect_garbage();
-  if (max_error && outcome.stop_reason == "no_collapse_left")
-    outcome.stop_reason = "error_bound_reached";
   const std::size_t refused_smoothing_moves =
       smooth_mesh(mesh, original, smoothing, smoothing_tolerance);
   write_mesh_and_snapshot(original, mesh, policy->name, snapshot, output);
@@ -216,7 +210,7 @@ int run(int argc, char** argv) {
   report.add("seconds", outcome.seconds);
   report.add("faces_removed_per_second", outcome.seconds > 0 ? removed / outcome.seconds : 0.0);
   report.add("peak_memory_mib", peak_rss_mib());
-  report.add("stop_reason", outcome.stop_reason);
+  report.add("stop_reason", to_string(outcome.stop_reason));
   report.add("max_error", settings.max_error);
   if (snapshot) report.add("snapshot", snapshot->png);
   report.add("smooth_iterations", smoothing.iterations);
@@ -241,7 +235,8 @@ int run(int argc, char** argv) {
     std::cout << report.str() << '\n';
   } else if (!quiet) {
     std::printf("%s: %zu -> %zu faces in %.3f s (%s)\n", policy->name.c_str(), input_faces,
-                std::size_t(mesh.number_of_faces()), outcome.seconds, outcome.stop_reason.c_str());
+                std::size_t(mesh.number_of_faces()), outcome.seconds,
+                to_string(outcome.stop_reason));
     if (snapshot) std::printf("wrote %s\n", snapshot->png.c_str());
     if (measure)
       std::printf("two-sided Hausdorff %.4f%%, mean %.4f%% / %.4f%% of the diagonal\n",

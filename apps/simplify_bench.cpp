@@ -1,5 +1,5 @@
 // simplify_bench: every policy of the registry and its peers on a matrix of meshes and targets, in
-// one process, with the evaluator of mesh_error (issue 7, evaluation.md). Prints the Markdown
+// one process, with the evaluator of mesh_error (issue 7, docs/evaluation.md). Prints the Markdown
 // report; --out DIR also writes runs.csv, runs.json, report.md and the plots.
 #include "bench/bench_peers.h"
 #include "bench/bench_plots.h"
@@ -9,6 +9,7 @@
 #include "common/App_error.h"
 #include "common/Command_line.h"
 #include "common/app_main.h"
+#include "common/policy_command_line.h"
 #include "common/policy_registry.h"
 
 #include <algorithm>
@@ -45,24 +46,27 @@ void print_help() {
               << p.description << " (" << p.repetitions
               << (p.repetitions == 1 ? " repetition" : " repetitions") << ", time limit "
               << p.time_limit_seconds << " s)\n";
-  std::cout << "  --data DIR           where the presets' meshes are (default ../shared/data)\n"
-               "  --mesh FILE          a mesh of your own; repeat for several\n"
-               "  --ratios A,B         targets as fractions of the faces kept (default 0.1)\n"
-               "  --faces N,M          targets as face counts\n"
-               "  --policies P,Q       which policies (default all; gh is always run, as the\n"
-               "                       reference of the time ratios): "
-            << names(all_policies())
-            << "\n"
-               "  --repetitions N      runs per case; the fastest counts (default: the preset's, "
-               "else 3)\n"
-               "  --samples N          face samples per direction of the error measure\n"
-               "  --time-limit S       stop an edge-collapse run after S seconds where it is,\n"
-               "                       and do not repeat it; 0: none (default: the preset's,\n"
-               "                       else none)\n"
-               "  --out DIR            also write runs.csv, runs.json, report.md and PNG plots\n"
-               "  --OPTION X           a policy option, for every policy that has it (simplify "
-               "--help)\n"
-               "  --help               this text\n";
+  std::cout
+      << "  --data DIR           where the presets' meshes are (default: the project's data/,\n"
+         "                       " CGAL_POLICIES_DATA_DIR
+         ")\n"
+         "  --mesh FILE          a mesh of your own; repeat for several\n"
+         "  --ratios A,B         targets as fractions of the faces kept (default 0.1)\n"
+         "  --faces N,M          targets as face counts\n"
+         "  --policies P,Q       which policies (default all; gh is always run, as the\n"
+         "                       reference of the time ratios): "
+      << names(all_policies())
+      << "\n"
+         "  --repetitions N      runs per case; the fastest counts (default: the preset's, "
+         "else 3)\n"
+         "  --samples N          face samples per direction of the error measure\n"
+         "  --time-limit S       stop an edge-collapse run after S seconds where it is,\n"
+         "                       and do not repeat it; 0: none (default: the preset's,\n"
+         "                       else none)\n"
+         "  --out DIR            also write runs.csv, runs.json, report.md and PNG plots\n"
+         "  --OPTION X           a policy option, for every policy that has it (simplify "
+         "--help)\n"
+         "  --help               this text\n";
   for (const Policy_entry& p : bench_peers())
     std::cout << "  peer " << p.name << ": " << p.summary << '\n';
 }
@@ -144,7 +148,7 @@ int run(int argc, char** argv) {
     return exit_success;
   }
   const std::optional<std::string> preset_name = cli.take_value("preset");
-  const std::string data = cli.take_value("data").value_or("../shared/data");
+  const std::string data = cli.take_value("data").value_or(CGAL_POLICIES_DATA_DIR);
   std::vector<std::string> mesh_files;
   while (const auto mesh = cli.take_value("mesh")) mesh_files.push_back(*mesh);
   const std::optional<std::string> ratios = cli.take_value("ratios"),
@@ -159,12 +163,11 @@ int run(int argc, char** argv) {
 
   Bench_plan plan;
   plan.policies = select_policies(policy_list);
-  for (const Policy_entry& p : plan.policies)
-    for (const Policy_option& o : p.options) {
-      if (o.is_flag && cli.take_flag(o.name)) plan.options[o.name] = 1;
-      if (!o.is_flag)
-        if (const auto value = cli.take_number(o.name)) plan.options[o.name] = *value;
-    }
+  for (const Policy_entry& p : plan.policies) {
+    const Option_values given = take_option_values(cli, p.options);
+    plan.options.insert(given.begin(), given.end());
+  }
+  for (const Policy_entry& p : plan.policies) check_policy_options(p, plan.options);
   if (!cli.positionals().empty())
     throw App_error(exit_usage, "unexpected argument '" + cli.positionals().front() + "'");
 

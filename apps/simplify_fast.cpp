@@ -1,7 +1,8 @@
-// simplify_fast IN OUT RATIO: the 2014 report's interface to its "improved" method (seed 002 §5.2),
+// simplify_fast IN OUT RATIO: the 2014 report's interface to its "improved" method ([Hu14] §5.2),
 // here Fast_threshold_simplifier with its defaults. simplify --policy fast offers the options.
 #include "common/App_error.h"
 #include "common/Command_line.h"
+#include "common/Stop_reason.h"
 #include "common/app_main.h"
 #include "common/mesh_io.h"
 
@@ -41,7 +42,9 @@ int run(int argc, char** argv) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_mesh_atomically(mesh, args[1]);
   std::printf("%zu -> %zu faces in %.3f s (%s)\n", input_faces, std::size_t(mesh.number_of_faces()),
-              seconds, report.target_reached ? "target_reached" : "no_collapse_left");
+              seconds,
+              to_string(report.target_reached ? Stop_reason::target_reached
+                                              : Stop_reason::no_collapse_left));
   return exit_success;
 }
 

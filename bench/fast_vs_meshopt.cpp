@@ -1,7 +1,7 @@
 // fast_vs_meshopt MESH... [--ratio R] [--repeat N] [--samples N]: the fast threshold QEM against
 // CGAL's Garland-Heckbert policy (gh) and meshoptimizer's meshopt_simplify, in one run, on the
-// same meshes and face targets (evaluation.md: ratios measured in the same run, minimum time of
-// N repetitions, two-sided errors by mesh_error's measure).
+// same meshes and face targets (docs/evaluation.md: ratios measured in the same run, minimum time
+// of N repetitions, two-sided errors by mesh_error's measure).
 #include "common/App_error.h"
 #include "common/Command_line.h"
 #include "common/app_main.h"

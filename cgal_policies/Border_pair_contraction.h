@@ -1,7 +1,7 @@
-// Border_pair_contraction: the manifold-safe part of pair contraction (seed 001 §2.1: pairs
-// (vi, vj) with |vi - vj| < t that are not edges; policies.md §0), as a pre-pass for any policy.
-// A Surface_mesh cannot hold the non-manifold result of merging arbitrary pairs, so only border
-// vertices are paired, and only across different border loops: it closes cracks.
+// Border_pair_contraction: the manifold-safe part of pair contraction ([QEM-tutorial] §2.1: pairs
+// (vi, vj) with |vi - vj| < t that are not edges; docs/quadric_core.md), as a pre-pass for any
+// policy. A Surface_mesh cannot hold the non-manifold result of merging arbitrary pairs, so only
+// border vertices are paired, and only across different border loops: it closes cracks.
 //
 // - Candidates: border vertices u, v on different border loops with |u - v| < t, t =
 //   relative_distance * D (D the bounding-box diagonal). Each vertex pairs with its nearest

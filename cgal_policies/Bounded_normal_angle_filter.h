@@ -1,5 +1,5 @@
 // Bounded_normal_angle_filter: refuses a collapse that would turn the normal of any surviving face
-// around the edge by more than a given angle (policies.md §0, flip prevention).
+// around the edge by more than a given angle (docs/quadric_core.md, flip prevention).
 //
 // CGAL's Bounded_normal_change_filter fixes the bound at 90 degrees; this one takes the bound as a
 // parameter and also refuses a collapse that leaves a surviving face degenerate.

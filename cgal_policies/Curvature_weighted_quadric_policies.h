@@ -1,5 +1,5 @@
-// Curvature_weighted_quadric_policies: the approximate-curvature quadric error metric of Zhang, Liu
-// and Guan (2009; seed 004), as policies.md §1 specifies it.
+// Curvature_weighted_quadric_policies: the approximate-curvature quadric error metric of
+// [Zhang09] (docs/curvature.md).
 //
 // - Vertex normal n_s: the normalised sum of the unit normals of the faces around s.
 // - Approximate curvature K_s (eq. 9-10): the mean, over the neighbours i of s, of cos(n_s, n_i).
@@ -23,127 +23,57 @@
 // Models CGAL's `GetCost` and `GetPlacement` concepts (one object, as CGAL's
 // GarlandHeckbert_plane_policies); its state lives in dynamic vertex properties, so the mesh gains
 // no visible property, and `Update_tag` makes `edge_collapse` call `initialize` and
-// `update_after_collapse`.
+// `update_after_collapse`. Pair it with a flip filter such as Bounded_normal_angle_filter.
 //
-// Parameters:
-//   eps            floor of the curvature factor f, dimensionless (default 1e-3); ignored when
-//                  literal is set
-//   border_weight  weight W_b of a border plane (default 1000; with area weighting it is multiplied
-//                  by the squared edge length so that it keeps the units of a face quadric)
-//   face_weighting Face_weighting::unit (default, as the papers) or Face_weighting::area
-//   literal        false (default) or true: eps = 0 and the border quadric scaled by f (eq. 12)
+// Parameters: Curvature_weighted_options (eps, literal, and the shared Quadric_options).
 //
 // Usage:
 //   cgal_policies::Curvature_weighted_quadric_policies<Mesh, Kernel> policies(mesh);
-//   SMS::edge_collapse(mesh, stop, CGAL::parameters::get_cost(policies.get_cost())
-//                                                   .get_placement(policies.get_placement()));
+//   SMS::edge_collapse(mesh, stop,
+//                      CGAL::parameters::get_cost(policies.get_cost())
+//                          .get_placement(policies.get_placement()));
 #ifndef CGAL_POLICIES_CURVATURE_WEIGHTED_QUADRIC_POLICIES_H
 #define CGAL_POLICIES_CURVATURE_WEIGHTED_QUADRIC_POLICIES_H
 
-#include <cgal_policies/Face_weighting.h>
-#include <cgal_policies/internal/Optional.h>
-#include <cgal_policies/internal/Quadric.h>
+#include <cgal_policies/Curvature_weighted_options.h>
+#include <cgal_policies/internal/Quadric_policy_base.h>
 #include <cgal_policies/internal/approximate_curvature.h>
-#include <cgal_policies/internal/plane_quadrics.h>
-#include <cgal_policies/internal/quadric_placement.h>
 
+#include <CGAL/assertions.h>
 #include <CGAL/boost/graph/properties.h>
-#include <CGAL/tags.h>
-
-#include <Eigen/Core>
 
 #include <algorithm>
 
 namespace cgal_policies {
 
 template <typename TriangleMesh, typename GeomTraits>
-class Curvature_weighted_quadric_policies {
-  using Quadric_property = CGAL::dynamic_vertex_property_t<internal::Quadric>;
-  using Quadric_map = typename boost::property_map<TriangleMesh, Quadric_property>::type;
+class Curvature_weighted_quadric_policies
+    : public internal::Quadric_policy_base<
+          TriangleMesh, GeomTraits, Curvature_weighted_quadric_policies<TriangleMesh, GeomTraits>,
+          true> {
+  using Base = internal::Quadric_policy_base<TriangleMesh, GeomTraits,
+                                             Curvature_weighted_quadric_policies, true>;
+  friend Base;
   using Normal_property = CGAL::dynamic_vertex_property_t<internal::Stored_normal>;
   using Normal_map = typename boost::property_map<TriangleMesh, Normal_property>::type;
   using Curvature_property = CGAL::dynamic_vertex_property_t<double>;
   using Curvature_map = typename boost::property_map<TriangleMesh, Curvature_property>::type;
-  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
 
  public:
-  using Update_tag = CGAL::Tag_true;
-  using Get_cost = Curvature_weighted_quadric_policies;
-  using Get_placement = Curvature_weighted_quadric_policies;
-  using FT = typename GeomTraits::FT;
+  using vertex_descriptor = typename Base::vertex_descriptor;
 
   // Weight of the shorter-edge-first term, relative to a squared edge length: far below any real
-  // weighted error (f >= eps = 1e-3 times a squared distance), so it only orders exact ties.
+  // weighted error (f >= eps times a squared distance), so it only orders exact ties.
   static constexpr double tie_break_weight = 1e-12;
 
-  explicit Curvature_weighted_quadric_policies(TriangleMesh& tm, double eps = 1e-3,
-                                               double border_weight = 1000.0,
-                                               Face_weighting face_weighting = Face_weighting::unit,
-                                               bool literal = false)
-      : m_face_quadrics(get(Quadric_property(), tm)),
-        m_border_quadrics(get(Quadric_property(), tm)),
+  explicit Curvature_weighted_quadric_policies(TriangleMesh& tm,
+                                               const Curvature_weighted_options& options = {})
+      : Base(tm, options),
         m_normals(get(Normal_property(), tm)),
         m_curvatures(get(Curvature_property(), tm)),
-        m_eps(literal ? 0.0 : eps),
-        m_border_weight(border_weight),
-        m_face_weighting(face_weighting),
-        m_literal(literal) {}
-
-  const Get_cost& get_cost() const { return *this; }
-  const Get_placement& get_placement() const { return *this; }
-
-  template <typename VertexPointMap>
-  void initialize(const TriangleMesh& tm, const VertexPointMap& vpm, const GeomTraits&) const {
-    internal::accumulate_vertex_quadrics(tm, vpm, m_face_weighting, m_border_weight,
-                                         m_face_quadrics, m_border_quadrics);
-    internal::compute_approximate_curvatures(tm, vpm, m_normals, m_curvatures);
-  }
-
-  template <typename Profile>
-  void update_after_collapse(const Profile& profile, vertex_descriptor kept) const {
-    put(m_face_quadrics, kept,
-        get(m_face_quadrics, profile.v0()) + get(m_face_quadrics, profile.v1()));
-    put(m_border_quadrics, kept,
-        get(m_border_quadrics, profile.v0()) + get(m_border_quadrics, profile.v1()));
-
-    // Only the faces around `kept` moved, so only its normal and its neighbours' changed.
-    const TriangleMesh& tm = profile.surface_mesh();
-    const auto vpm = profile.vertex_point_map();
-    put(m_normals, kept, internal::curvature_vertex_normal(kept, tm, vpm));
-    for (auto h : CGAL::halfedges_around_target(halfedge(kept, tm), tm))
-      put(m_normals, source(h, tm), internal::curvature_vertex_normal(source(h, tm), tm, vpm));
-    put(m_curvatures, kept, internal::approximate_curvature(kept, tm, m_normals));
-    for (auto h : CGAL::halfedges_around_target(halfedge(kept, tm), tm))
-      put(m_curvatures, source(h, tm),
-          internal::approximate_curvature(source(h, tm), tm, m_normals));
-  }
-
-  // Cost.
-  template <typename Profile>
-  internal::Optional<typename Profile::FT> operator()(
-      const Profile& profile, const internal::Optional<typename Profile::Point>& placement) const {
-    if (!placement) return {};
-    const Eigen::Vector3d x = internal::to_eigen(*placement);
-    const double f = curvature_factor(profile.v0(), profile.v1());
-    // Round-off can dip a quadric's value below zero.
-    const double face_error = (std::max)(0.0, face_quadric(profile).evaluate(x));
-    const double border_error = (std::max)(0.0, border_quadric(profile).evaluate(x));
-    const double weighted =
-        m_literal ? f * (face_error + border_error) : f * face_error + border_error;
-    const double length2 =
-        (internal::to_eigen(profile.p1()) - internal::to_eigen(profile.p0())).squaredNorm();
-    const double tie_break =
-        tie_break_weight * length2 * (m_face_weighting == Face_weighting::area ? length2 : 1.0);
-    return typename Profile::FT(weighted + tie_break);
-  }
-
-  // Placement.
-  template <typename Profile>
-  internal::Optional<typename Profile::Point> operator()(const Profile& profile) const {
-    const internal::Quadric_placement choice = internal::optimal_placement(
-        face_quadric(profile) + border_quadric(profile), internal::to_eigen(profile.p0()),
-        internal::to_eigen(profile.p1()));
-    return internal::to_point<typename Profile::Point>(choice.point);
+        m_eps(options.literal ? 0.0 : options.eps),
+        m_literal(options.literal) {
+    CGAL_precondition(options.eps >= 0);
   }
 
   // For inspection (tests, reports): K of v as last refreshed, after `initialize`.
@@ -156,22 +86,40 @@ class Curvature_weighted_quadric_policies {
   }
 
  private:
-  template <typename Profile>
-  internal::Quadric face_quadric(const Profile& profile) const {
-    return get(m_face_quadrics, profile.v0()) + get(m_face_quadrics, profile.v1());
-  }
-  template <typename Profile>
-  internal::Quadric border_quadric(const Profile& profile) const {
-    return get(m_border_quadrics, profile.v0()) + get(m_border_quadrics, profile.v1());
+  template <typename VertexPointMap>
+  void initialize_features(const TriangleMesh& tm, const VertexPointMap& vpm) const {
+    internal::compute_approximate_curvatures(tm, vpm, m_normals, m_curvatures);
   }
 
-  Quadric_map m_face_quadrics;
-  Quadric_map m_border_quadrics;
+  // Only the faces around `kept` moved, so only its normal and its neighbours' changed.
+  template <typename Profile>
+  void update_features(const Profile& profile, vertex_descriptor kept) const {
+    const TriangleMesh& tm = profile.surface_mesh();
+    const auto vpm = profile.vertex_point_map();
+    put(m_normals, kept, internal::curvature_vertex_normal(kept, tm, vpm));
+    for (auto h : CGAL::halfedges_around_target(halfedge(kept, tm), tm))
+      put(m_normals, source(h, tm), internal::curvature_vertex_normal(source(h, tm), tm, vpm));
+    put(m_curvatures, kept, internal::approximate_curvature(kept, tm, m_normals));
+    for (auto h : CGAL::halfedges_around_target(halfedge(kept, tm), tm))
+      put(m_curvatures, source(h, tm),
+          internal::approximate_curvature(source(h, tm), tm, m_normals));
+  }
+
+  // f scales the face planes only (both in literal mode); the tie-break orders exact ties.
+  template <typename Profile>
+  double cost_of(const Profile& profile, double face_error, double border_error) const {
+    const double f = curvature_factor(profile.v0(), profile.v1());
+    const double weighted =
+        m_literal ? f * (face_error + border_error) : f * face_error + border_error;
+    const double length2 =
+        (internal::to_eigen(profile.p1()) - internal::to_eigen(profile.p0())).squaredNorm();
+    const bool area_weights = this->quadric_options().face_weighting == Face_weighting::area;
+    return weighted + tie_break_weight * length2 * (area_weights ? length2 : 1.0);
+  }
+
   Normal_map m_normals;
   Curvature_map m_curvatures;
   double m_eps;
-  double m_border_weight;
-  Face_weighting m_face_weighting;
   bool m_literal;
 };
 

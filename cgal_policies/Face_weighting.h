@@ -1,4 +1,4 @@
-// How a face's plane quadric is weighted when it is added to its vertices (policies.md §0).
+// How a face's plane quadric is weighted when it is added to its vertices (docs/quadric_core.md).
 #ifndef CGAL_POLICIES_FACE_WEIGHTING_H
 #define CGAL_POLICIES_FACE_WEIGHTING_H
 

@@ -1,8 +1,8 @@
-// Fast_threshold_simplifier: the 2014 report's "improved" quadric simplification (seed 002 §2.2;
-// policies.md §5), made safe. It does not run inside SMS::edge_collapse: the mesh is copied to
+// Fast_threshold_simplifier: the "improved" quadric simplification of [Hu14] §2.2, made safe
+// (docs/fast.md). It does not run inside SMS::edge_collapse: the mesh is copied to
 // flat arrays, simplified there, and rebuilt.
 //
-// - Error of an edge: x~^T (Q0 + Q1) x~ at the placement of the QEM tutorial (policies.md §0),
+// - Error of an edge: x~^T (Q0 + Q1) x~ at the placement of the shared quadric core,
 //   Q_v summing the face planes around v and border planes of weight border_weight. Each
 //   triangle stores the errors of its three edges.
 // - Passes k = 0, 1, ... scan the triangles in order and collapse an edge whose error is below
@@ -10,7 +10,7 @@
 //   at most one collapse per triangle per pass; reference lists are compacted every few passes.
 //   Ours: a pass also takes only errors within the cheapest 40% of the triangles not refused
 //   since they last changed, so that cheap edges go first even where t_0 already exceeds nearly
-//   every error (fine meshes: dragon.ply's mean error at 1% falls from 2x gh's to 1.1x).
+//   every error (on fine meshes, where storage order would otherwise decide).
 // - A collapse is refused when it breaks the link condition (which the report's method lacks: a
 //   manifold input gives a manifold output), when it turns a surviving face normal by more than
 //   max_normal_angle_deg, or when it makes a needle or a sliver (twice the area over the squared
@@ -21,13 +21,11 @@
 // - Deterministic: the same mesh gives the same result.
 //
 // Works on any `MutableFaceGraph` triangle mesh with an internal vertex point map (e.g.
-// CGAL::Surface_mesh). The mesh is rebuilt: descriptors and user properties are not kept.
+// CGAL::Surface_mesh): the mesh is cleared and rebuilt, which an external point map would not
+// survive, so descriptors and user properties are not kept either.
 //
-// Parameters:
-//   aggressiveness        a in t_k (default 7; larger is faster and coarser), > 0
-//   lossless              see above (default false)
-//   max_normal_angle_deg  flip bound in degrees (default 90)
-//   border_weight         weight of the border planes (default 1000)
+// Parameters: Fast_threshold_options (aggressiveness, lossless, max_normal_angle_deg,
+// border_weight).
 //
 // Usage:
 //   cgal_policies::Fast_threshold_simplifier simplifier;
@@ -37,10 +35,12 @@
 #define CGAL_POLICIES_FAST_THRESHOLD_SIMPLIFIER_H
 
 #include <cgal_policies/Face_weighting.h>
+#include <cgal_policies/Fast_threshold_options.h>
 #include <cgal_policies/internal/Fast_threshold_engine.h>
 #include <cgal_policies/internal/mesh_geometry.h>
 #include <cgal_policies/internal/plane_quadrics.h>
 
+#include <CGAL/assertions.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/properties.h>
@@ -59,13 +59,14 @@ struct Fast_threshold_report {
 
 class Fast_threshold_simplifier {
  public:
-  explicit Fast_threshold_simplifier(double aggressiveness = 7, bool lossless = false,
-                                     double max_normal_angle_deg = 90, double border_weight = 1000)
-      : m_border_weight(border_weight) {
-    if (!(aggressiveness > 0)) throw std::invalid_argument("aggressiveness must be positive");
-    m_settings.aggressiveness = aggressiveness;
-    m_settings.lossless = lossless;
-    m_settings.max_normal_angle_deg = max_normal_angle_deg;
+  explicit Fast_threshold_simplifier(const Fast_threshold_options& options = {})
+      : m_border_weight(options.border_weight) {
+    CGAL_precondition(options.aggressiveness > 0);
+    CGAL_precondition(options.max_normal_angle_deg >= 0 && options.max_normal_angle_deg <= 180);
+    CGAL_precondition(options.border_weight >= 0);
+    m_settings.aggressiveness = options.aggressiveness;
+    m_settings.lossless = options.lossless;
+    m_settings.max_normal_angle_deg = options.max_normal_angle_deg;
   }
 
   // Simplifies tm until at most target_faces faces remain, or no allowed collapse is left.
@@ -111,7 +112,7 @@ class Fast_threshold_simplifier {
     // Back to the mesh.
     std::vector<Eigen::Vector3d> points;
     engine.extract(points, triangles);
-    CGAL::clear(tm);
+    CGAL::clear(tm);  // which resets the internal point map too
     const auto new_vpm = get(CGAL::vertex_point, tm);
     std::vector<Vertex_descriptor> new_vertices;
     new_vertices.reserve(points.size());

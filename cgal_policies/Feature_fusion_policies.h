@@ -1,6 +1,6 @@
-// Feature_fusion_policies: the multi-feature fusion cost of Wang et al. 2013 (seed 000), a quadric
-// error weighted by the normal variation plus a visual term, the normal twist weighted by the
-// triangles' side ratio (policies.md §2).
+// Feature_fusion_policies: the multi-feature fusion cost of [Wang13], a quadric error weighted by
+// the normal variation plus a visual term, the normal twist weighted by the triangles' side ratio
+// (docs/fusion.md).
 //
 //   Cost_all = C_geom + C_visu                               (the paper's eq. 3)
 //   C_geom   = (1 + mu * omega(e)) * x~^T F x~ + x~^T B x~     (ours)
@@ -15,15 +15,13 @@
 //   omega(e) = max(thbar(v0), thbar(v1)), thbar(v) the mean angle (radians) between the
 //     area-weighted normal of v and those of its neighbours; the factor 1 + mu omega is >= 1, so
 //     it never discounts real error; it weights the face planes only, the border planes keep
-//     their weight W_b as policies.md §0 asks of a policy that scales the face quadric (scaling
-//     them too made borders stiffer wherever the normals vary, and raised the bunny's mean error
-//     at 1% from 1.022 to 1.039 times gh's);
+//     their weight W_b (scaling them too would make borders stiffer wherever the normals vary);
 //   T(e) = max(T(v0), T(v1)), T(v) the mean |normal twist| along the edges around v, the twist
 //     being (n_j - n_v) . (nbar x t) (about the geodesic torsion times the edge length): zero on
 //     planes and spheres, large where the surface twists (saddles, anisotropic curvature);
 //   L0, the mean edge length of the input, gives C_visu the units of the quadric, so the whole cost
 //     is scale-invariant.
-// Placement is the optimum of F + B (the shared chain of policies.md §0); the merged vertex keeps
+// Placement is the optimum of F + B (the shared placement chain); the merged vertex keeps
 // both sums. After each collapse the normals of the kept vertex and its neighbours, the angles and
 // twists stored on their edges, and thbar and T one ring further, are brought up to date (equal
 // to a fresh computation: thbar and T are means of fixed-point sums, see
@@ -35,31 +33,25 @@
 // no visible property, and `Update_tag` makes `edge_collapse` call `initialize` and
 // `update_after_collapse`. Pair it with a flip filter such as Bounded_normal_angle_filter.
 //
-// Parameters:
-//   mu             weight of the normal variation, per radian (default 2)
-//   visual_weight  w_v, weight of the visual term (default 0: off; every weight tried raised the
-//                  mean error, see scripts/sweep_fusion.sh)
-//   border_weight  weight W_b of a border plane, as in Classic_quadric_policies (default 1000)
+// Parameters: Feature_fusion_options (mu, visual_weight, and the shared Quadric_options).
 //
 // Usage:
 //   cgal_policies::Feature_fusion_policies<Mesh, Kernel> policies(mesh);
 //   cgal_policies::Bounded_normal_angle_filter<> filter;
-//   SMS::edge_collapse(mesh, stop, CGAL::parameters::get_cost(policies.get_cost())
-//                                                   .get_placement(policies.get_placement())
-//                                                   .filter(filter));
+//   SMS::edge_collapse(mesh, stop,
+//                      CGAL::parameters::get_cost(policies.get_cost())
+//                          .get_placement(policies.get_placement())
+//                          .filter(filter));
 #ifndef CGAL_POLICIES_FEATURE_FUSION_POLICIES_H
 #define CGAL_POLICIES_FEATURE_FUSION_POLICIES_H
 
-#include <cgal_policies/Face_weighting.h>
-#include <cgal_policies/internal/Optional.h>
-#include <cgal_policies/internal/Quadric.h>
+#include <cgal_policies/Feature_fusion_options.h>
+#include <cgal_policies/internal/Quadric_policy_base.h>
 #include <cgal_policies/internal/feature_fusion_measures.h>
 #include <cgal_policies/internal/mesh_geometry.h>
-#include <cgal_policies/internal/plane_quadrics.h>
-#include <cgal_policies/internal/quadric_placement.h>
 
+#include <CGAL/assertions.h>
 #include <CGAL/boost/graph/properties.h>
-#include <CGAL/tags.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -67,7 +59,12 @@
 namespace cgal_policies {
 
 template <typename TriangleMesh, typename GeomTraits>
-class Feature_fusion_policies {
+class Feature_fusion_policies
+    : public internal::Quadric_policy_base<
+          TriangleMesh, GeomTraits, Feature_fusion_policies<TriangleMesh, GeomTraits>, true> {
+  using Base =
+      internal::Quadric_policy_base<TriangleMesh, GeomTraits, Feature_fusion_policies, true>;
+  friend Base;
   template <typename T>
   using Vertex_map =
       typename boost::property_map<TriangleMesh, CGAL::dynamic_vertex_property_t<T>>::type;
@@ -80,12 +77,11 @@ class Feature_fusion_policies {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
 
-  // Everything the cost reads about a vertex besides its quadric, in one property.
+  // Everything the cost reads about a vertex besides its quadrics, in one property.
   struct Vertex_features {
     Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // area-weighted, unit
     internal::Normal_variation_sum variation;          // the sums behind thbar(v) and T(v)
     std::size_t stamp = 0;                             // the last update that refreshed the normal
-    bool has_border_planes = false;                    // whether its border quadric can be nonzero
   };
   // A face's area normal, initialised so that the property's default value is defined.
   struct Face_normal {
@@ -93,42 +89,37 @@ class Feature_fusion_policies {
   };
 
  public:
-  using Update_tag = CGAL::Tag_true;
-  using Get_cost = Feature_fusion_policies;
-  using Get_placement = Feature_fusion_policies;
-  using FT = typename GeomTraits::FT;
-
-  // The defaults chosen by scripts/sweep_fusion.sh.
-  static constexpr double default_mu = 2.0;
-  static constexpr double default_visual_weight = 0.0;
-
-  explicit Feature_fusion_policies(TriangleMesh& tm, double mu = default_mu,
-                                   double visual_weight = default_visual_weight,
-                                   double border_weight = 1000.0)
-      : m_quadrics(get(CGAL::dynamic_vertex_property_t<internal::Quadric>(), tm)),
-        m_border_quadrics(get(CGAL::dynamic_vertex_property_t<internal::Quadric>(), tm)),
+  explicit Feature_fusion_policies(TriangleMesh& tm, const Feature_fusion_options& options = {})
+      : Base(tm, options),
         m_features(get(CGAL::dynamic_vertex_property_t<Vertex_features>(), tm)),
         m_edge_terms(get(CGAL::dynamic_edge_property_t<internal::Normal_variation_sum>(), tm)),
         m_face_normals(get(CGAL::dynamic_face_property_t<Face_normal>(), tm)),
-        m_mu(mu),
-        m_visual_weight(visual_weight),
-        m_border_weight(border_weight) {}
+        m_mu(options.mu),
+        m_visual_weight(options.visual_weight) {
+    CGAL_precondition(options.mu >= 0);
+    CGAL_precondition(options.visual_weight >= 0);
+  }
 
-  const Get_cost& get_cost() const { return *this; }
-  const Get_placement& get_placement() const { return *this; }
+  // The terms of the cost, for tests and inspection; valid once `initialize` has run.
+  double normal_factor(vertex_descriptor v0, vertex_descriptor v1) const {
+    return 1.0 + m_mu * (std::max)(get(m_features, v0).variation.mean_angle(),
+                                   get(m_features, v1).variation.mean_angle());
+  }
+  double edge_twist(vertex_descriptor v0, vertex_descriptor v1) const {
+    return (std::max)(get(m_features, v0).variation.mean_twist(),
+                      get(m_features, v1).variation.mean_twist());
+  }
+  double input_mean_edge_length() const { return m_input_edge_length; }
 
+ private:
   template <typename VertexPointMap>
-  void initialize(const TriangleMesh& tm, const VertexPointMap& vpm, const GeomTraits&) const {
-    internal::accumulate_vertex_quadrics(tm, vpm, Face_weighting::unit, m_border_weight, m_quadrics,
-                                         m_border_quadrics);
+  void initialize_features(const TriangleMesh& tm, const VertexPointMap& vpm) const {
     m_input_edge_length = internal::mean_edge_length(tm, vpm);
     m_stamp = 0;
     for (auto f : faces(tm))
       put(m_face_normals, f, Face_normal{internal::face_area_normal(f, tm, vpm)});
     for (vertex_descriptor v : vertices(tm)) {
-      Vertex_features features;
-      features.has_border_planes = bool(CGAL::is_border(v, tm));
-      put(m_features, v, features);
+      put(m_features, v, Vertex_features());
       refresh_normal(v, tm);
     }
     for (auto e : edges(tm)) put(m_edge_terms, e, edge_term(halfedge(e, tm), tm, vpm));
@@ -136,14 +127,7 @@ class Feature_fusion_policies {
   }
 
   template <typename Profile>
-  void update_after_collapse(const Profile& profile, vertex_descriptor kept) const {
-    put(m_quadrics, kept, face_quadric(profile));
-    if (has_border_planes(profile)) {
-      put(m_border_quadrics, kept, border_quadric(profile));
-      Vertex_features features = get(m_features, kept);
-      features.has_border_planes = true;
-      put(m_features, kept, features);
-    }
+  void update_features(const Profile& profile, vertex_descriptor kept) const {
     const TriangleMesh& tm = profile.surface_mesh();
     const auto vpm = profile.vertex_point_map();
     // The faces around the kept vertex moved: the normals of the vertex and its neighbours change
@@ -176,61 +160,17 @@ class Feature_fusion_policies {
     for (vertex_descriptor j : ring) refresh_sums(j, tm);
   }
 
-  // Cost.
+  // The factor scales the face planes only: scaling the border planes too would make borders
+  // stiffer wherever the normals vary.
   template <typename Profile>
-  internal::Optional<typename Profile::FT> operator()(
-      const Profile& profile, const internal::Optional<typename Profile::Point>& placement) const {
-    if (!placement) return {};
-    // Round-off can dip a quadric below zero. The factor leaves the border planes out (policies.md
-    // §0): scaling them too would make borders stiffer wherever the normals vary.
-    const Eigen::Vector3d x = internal::to_eigen(*placement);
-    double geometric = normal_factor(profile.v0(), profile.v1()) *
-                       (std::max)(0.0, face_quadric(profile).evaluate(x));
-    if (has_border_planes(profile))
-      geometric += (std::max)(0.0, border_quadric(profile).evaluate(x));
-    if (m_visual_weight == 0) return typename Profile::FT(geometric);  // the default: skip zeta
+  double cost_of(const Profile& profile, double face_error, double border_error) const {
+    const double geometric = normal_factor(profile.v0(), profile.v1()) * face_error + border_error;
+    if (m_visual_weight == 0) return geometric;  // the default: skip zeta
     const double zeta =
         internal::side_ratio(profile.v0_v1(), profile.surface_mesh(), profile.vertex_point_map());
     const double visual = m_visual_weight * zeta * edge_twist(profile.v0(), profile.v1()) *
                           m_input_edge_length * m_input_edge_length;
-    return typename Profile::FT(geometric + visual);
-  }
-
-  // Placement.
-  template <typename Profile>
-  internal::Optional<typename Profile::Point> operator()(const Profile& profile) const {
-    internal::Quadric quadric = face_quadric(profile);
-    if (has_border_planes(profile)) quadric += border_quadric(profile);
-    const internal::Quadric_placement choice = internal::optimal_placement(
-        quadric, internal::to_eigen(profile.p0()), internal::to_eigen(profile.p1()));
-    return internal::to_point<typename Profile::Point>(choice.point);
-  }
-
-  // The terms of the cost, for tests and inspection; valid once `initialize` has run.
-  double normal_factor(vertex_descriptor v0, vertex_descriptor v1) const {
-    return 1.0 + m_mu * (std::max)(get(m_features, v0).variation.mean_angle(),
-                                   get(m_features, v1).variation.mean_angle());
-  }
-  double edge_twist(vertex_descriptor v0, vertex_descriptor v1) const {
-    return (std::max)(get(m_features, v0).variation.mean_twist(),
-                      get(m_features, v1).variation.mean_twist());
-  }
-  double input_mean_edge_length() const { return m_input_edge_length; }
-
- private:
-  template <typename Profile>
-  internal::Quadric face_quadric(const Profile& profile) const {
-    return get(m_quadrics, profile.v0()) + get(m_quadrics, profile.v1());
-  }
-  // Only vertices that were on a border have border planes: the others skip reading them.
-  template <typename Profile>
-  bool has_border_planes(const Profile& profile) const {
-    return get(m_features, profile.v0()).has_border_planes ||
-           get(m_features, profile.v1()).has_border_planes;
-  }
-  template <typename Profile>
-  internal::Quadric border_quadric(const Profile& profile) const {
-    return get(m_border_quadrics, profile.v0()) + get(m_border_quadrics, profile.v1());
+    return geometric + visual;
   }
 
   // The area-weighted normal of v (internal::vertex_normal) from the stored face normals, which
@@ -264,14 +204,11 @@ class Feature_fusion_policies {
     put(m_features, v, features);
   }
 
-  Vertex_map<internal::Quadric> m_quadrics;         // face planes
-  Vertex_map<internal::Quadric> m_border_quadrics;  // border planes
   Vertex_map<Vertex_features> m_features;
   Edge_map<internal::Normal_variation_sum> m_edge_terms;  // angle and |twist| along each edge
   Face_map<Face_normal> m_face_normals;
   double m_mu;
   double m_visual_weight;
-  double m_border_weight;
   mutable double m_input_edge_length = 0;  // L0, set by initialize
   mutable std::size_t m_stamp = 0;
 };

@@ -58,7 +58,7 @@ class Hausdorff_bounded_placement {
                                        const Hausdorff_bounded_options& options = {})
       : m_options(options),
         m_tracker(std::make_shared<Tracker>(tm, tm, options.alpha * options.beta, options)),
-        m_quadrics(tm, options.border_weight),
+        m_quadrics(tm, Quadric_options{options.border_weight, Face_weighting::unit}),
         m_cost(m_tracker, m_quadrics, options.order),
         m_filter(m_tracker, options) {}
 

@@ -1,5 +1,5 @@
 // Laplacian_smoother: Laplacian smoothing as a post-process of simplification (Liu et al. 2017,
-// seed 003, §2.4, eq. 8-9; policies.md §3).
+// [Liu17], §2.4, eq. 8-9; docs/hausdorff.md).
 //
 // Each pass moves every interior vertex at once towards the weighted mean U of its neighbours,
 // P <- P + lambda (U - P), with uniform weights or w_i = 1 / |P - p_i| (eq. 8). Border vertices

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Chooses the defaults of the fusion policy (policies.md §2): simplifies bunny, fandisk, nefertiti,
+# Chooses the defaults of the fusion policy (docs/fusion.md): simplifies bunny, fandisk, nefertiti,
 # cow and rocker-arm to 10% and 1% of their faces for every (mu, visual-weight) of a small grid, and
 # ranks the pairs by their mean two-sided error, (mean_a_to_b_rel + mean_b_to_a_rel) / 2, divided by
 # that of CGAL's gh on the same case, then averaged over the ten cases (so that each case counts
@@ -8,7 +8,7 @@
 # usage: scripts/sweep_fusion.sh [BIN_DIR] [OUT_DIR]
 #   BIN_DIR  where simplify is (default build/bin)
 #   OUT_DIR  where the raw results go (default out/sweep_fusion); results.tsv holds one line a run
-# Environment: DATA (default ../shared/data), SAMPLES per direction for --measure (default 50000),
+# Environment: DATA (default the project's data/), SAMPLES per direction for --measure (default 50000),
 #   MUS and WEIGHTS (the grid, space-separated), MESHES (default bunny fandisk nefertiti cow
 #   rocker-arm). About 20 minutes on a busy 2-core machine.
 set -euo pipefail
@@ -16,7 +16,7 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bin="${1:-$root/build/bin}"
 out="${2:-$root/out/sweep_fusion}"
-data="${DATA:-$root/../shared/data}"
+data="${DATA:-$root/data}"
 samples="${SAMPLES:-50000}"
 mus="${MUS:-0 0.5 2 8}"
 weights="${WEIGHTS:-0 0.005 0.02}"

@@ -90,15 +90,15 @@ std::size_t count_occurrences(const std::string& text, const std::string& what) 
 
 int run_command(const std::string& command) { return std::system(command.c_str()); }
 
-class Bench_quick_preset : public ::testing::Test {
+class BenchQuickPreset : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    if (!test_meshes::shared_data_available() || test_meshes::real_meshes_skipped()) return;
+    if (test_meshes::real_meshes_skipped()) return;
     s_out = fs::temp_directory_path() / ("cgal_policies_bench_test_" + std::to_string(::getpid()));
     fs::remove_all(s_out);
     s_exit =
         run_command(std::string(CGAL_POLICIES_BIN_DIR) + "/simplify_bench --preset quick --data '" +
-                    CGAL_POLICIES_SHARED_DATA + "' --out '" + s_out.string() + "' > '" +
+                    CGAL_POLICIES_DATA_DIR + "' --out '" + s_out.string() + "' > '" +
                     (s_out.string() + ".stdout") + "' 2> '" + (s_out.string() + ".stderr") + "'");
     s_rows = read_csv(s_out / "runs.csv");
   }
@@ -109,7 +109,7 @@ class Bench_quick_preset : public ::testing::Test {
     fs::remove(s_out.string() + ".stderr");
   }
   void SetUp() override {
-    SKIP_WITHOUT_SHARED_DATA();
+    SKIP_IF_REAL_MESHES_ARE_OFF();
     ASSERT_EQ(s_exit, 0) << read_text(s_out.string() + ".stderr");
     ASSERT_FALSE(s_rows.empty());
   }
@@ -119,11 +119,11 @@ class Bench_quick_preset : public ::testing::Test {
   static std::vector<Row> s_rows;
 };
 
-fs::path Bench_quick_preset::s_out;
-int Bench_quick_preset::s_exit = -1;
-std::vector<Row> Bench_quick_preset::s_rows;
+fs::path BenchQuickPreset::s_out;
+int BenchQuickPreset::s_exit = -1;
+std::vector<Row> BenchQuickPreset::s_rows;
 
-TEST_F(Bench_quick_preset, CsvHasOneRowPerCaseAndPolicyWithFiniteNumbers) {
+TEST_F(BenchQuickPreset, CsvHasOneRowPerCaseAndPolicyWithFiniteNumbers) {
   const std::set<std::string> text_columns = {"mesh",        "target", "label", "policy",
                                               "stop_reason", "valid",  "closed"};
   std::set<std::pair<std::string, std::string>> cases;
@@ -146,7 +146,7 @@ TEST_F(Bench_quick_preset, CsvHasOneRowPerCaseAndPolicyWithFiniteNumbers) {
     EXPECT_TRUE(policies.count(p.name)) << "policy " << p.name << " did not run";
 }
 
-TEST_F(Bench_quick_preset, JsonMarkdownAndPlotsCoverEveryRun) {
+TEST_F(BenchQuickPreset, JsonMarkdownAndPlotsCoverEveryRun) {
   const std::string json = read_text(s_out / "runs.json");
   EXPECT_EQ(count_occurrences(json, "\"policy\": "), s_rows.size());
   EXPECT_EQ(json.find("null"), std::string::npos);
@@ -175,7 +175,7 @@ TEST_F(Bench_quick_preset, JsonMarkdownAndPlotsCoverEveryRun) {
   }
 }
 
-TEST_F(Bench_quick_preset, GhRowsMatchSimplify) {
+TEST_F(BenchQuickPreset, GhRowsMatchSimplify) {
   std::size_t checked = 0;
   for (const Row& row : s_rows) {
     if (row.at("policy") != "gh") continue;
@@ -185,8 +185,8 @@ TEST_F(Bench_quick_preset, GhRowsMatchSimplify) {
     const std::string target =
         ratio > 0 ? row.at("target_ratio") : "--faces " + row.at("target_faces");
     ASSERT_EQ(run_command(std::string(CGAL_POLICIES_BIN_DIR) + "/simplify '" +
-                          test_meshes::shared_data(row.at("mesh")) + "' '" + output.string() +
-                          "' " + target + " --policy gh --measure --json --quiet --samples " +
+                          test_meshes::data_file(row.at("mesh")) + "' '" + output.string() + "' " +
+                          target + " --policy gh --measure --json --quiet --samples " +
                           row.at("samples") + " > '" + json_path + "'"),
               0);
     const std::string json = read_text(json_path);
@@ -201,7 +201,7 @@ TEST_F(Bench_quick_preset, GhRowsMatchSimplify) {
 
 // A limit that has passed before the first collapse: every edge-collapse run stops at once, is
 // marked in the report and is not repeated.
-TEST(Bench_time_limit, StopsARunWhereItIsAndDoesNotRepeatIt) {
+TEST(BenchTimeLimit, StopsARunWhereItIsAndDoesNotRepeatIt) {
   const fs::path out =
       fs::temp_directory_path() / ("cgal_policies_bench_limit_" + std::to_string(::getpid()));
   fs::remove_all(out);

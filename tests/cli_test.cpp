@@ -1,5 +1,5 @@
 // The apps from the outside: exit codes, one error line naming the file, no partial output, the
-// input never overwritten (DESIGN.md "Interfaces that others rely on").
+// input never overwritten (README.md "Interfaces that others rely on").
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
@@ -165,6 +165,26 @@ TEST_F(Cli, BadUsageGivesCodeTwo) {
   }
 }
 
+TEST_F(Cli, OptionsOutOfRangeAreRefusedBeforeTheInputIsRead) {
+  // The input does not exist: a check made after reading would give code 3, not 2.
+  const fs::path in = file("missing.off"), out = file("out.off");
+  const std::string io = in.string() + " " + out.string() + " 0.5 ";
+  for (const std::string option :
+       {"--policy hausdorff --tolerance -1", "--policy hausdorff --tolerance 0",
+        "--policy hausdorff --steps 0", "--policy hausdorff --steps 2.5",
+        "--policy fast --aggressiveness 0", "--policy classic --border-weight -1",
+        "--policy curvature --eps -0.1", "--policy fusion --mu -2", "--max-normal-angle 200",
+        "--policy fast --max-error 0.01"}) {
+    const Command_result r = run("simplify", io + option);
+    EXPECT_EQ(r.exit_code, 2) << option << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    const std::string name = option.substr(
+        option.rfind("--"), option.find(' ', option.rfind("--")) - option.rfind("--"));
+    EXPECT_NE(r.err.find(name), std::string::npos) << "the line names " << name << ": " << r.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+}
+
 TEST_F(Cli, MeshErrorBetweenAFileAndItselfIsZero) {
   const fs::path in = write("tet.off", kTetrahedronOff);
   const Command_result r =
@@ -238,10 +258,10 @@ TEST_F(Cli, TheFastPolicyRefusesMaxError) {
 }
 
 TEST_F(Cli, TheBunnyAtTenPercentWithGhReachesItsTarget) {
-  SKIP_WITHOUT_SHARED_DATA();
+  SKIP_IF_REAL_MESHES_ARE_OFF();
   const fs::path out = file("bunny.ply");
   const Command_result r =
-      run("simplify", test_meshes::shared_data("bunny.obj") + " " + out.string() +
+      run("simplify", test_meshes::data_file("bunny.obj") + " " + out.string() +
                           " 0.1 --policy gh --json --measure --samples 20000");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::smatch faces;

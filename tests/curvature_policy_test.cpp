@@ -1,6 +1,5 @@
-// Curvature_weighted_quadric_policies (policies.md §1) on tiny meshes with exact expectations; the
-// registry's property tests run it on real meshes.
-#include "common/edge_collapse_runner.h"
+// Curvature_weighted_quadric_policies (docs/curvature.md) on tiny meshes with exact expectations;
+// the registry's property tests run it on real meshes.
 #include "test_meshes.h"
 
 #include <cgal_policies/Classic_quadric_policies.h>
@@ -20,10 +19,16 @@
 namespace {
 
 using namespace test_meshes;
-using Policies = cgal_policies::Curvature_weighted_quadric_policies<Mesh, apps::Kernel>;
+using Policies = cgal_policies::Curvature_weighted_quadric_policies<Mesh, test_meshes::Kernel>;
 namespace SMS = CGAL::Surface_mesh_simplification;
 
 constexpr double kEps = 1e-3;  // the default floor
+
+cgal_policies::Curvature_weighted_options literal_options() {
+  cgal_policies::Curvature_weighted_options options;
+  options.literal = true;
+  return options;
+}
 
 // The grid of flat_grid(nx x ny) lifted to z = height(i, j), all scaled by `scale`.
 Mesh height_grid(int nx, int ny, const std::function<double(int, int)>& height,
@@ -65,9 +70,9 @@ double edge_cost(const P& policies, Mesh& mesh, Mesh::Halfedge_index h) {
 TEST(CurvatureWeightedQuadricPolicies, AFlatPatchHasCurvatureOneAndFactorEps) {
   Mesh mesh = flat_grid(4);
   const Policies policies(mesh);
-  const Policies literal(mesh, kEps, 1000, cgal_policies::Face_weighting::unit, true);
-  policies.initialize(mesh, mesh.points(), apps::Kernel());
-  literal.initialize(mesh, mesh.points(), apps::Kernel());
+  const Policies literal(mesh, literal_options());
+  policies.initialize(mesh, mesh.points(), test_meshes::Kernel());
+  literal.initialize(mesh, mesh.points(), test_meshes::Kernel());
   for (auto v : vertices(mesh)) EXPECT_EQ(policies.approximate_curvature(v), 1.0);
   for (auto e : edges(mesh)) {
     const auto h = halfedge(e, mesh);
@@ -92,7 +97,7 @@ TEST(CurvatureWeightedQuadricPolicies, ACubeCornerHasTheCurvatureDerivedByHand) 
                                                         {0, 3, 6},
                                                         {0, 6, 2}});  // x = 0
   const Policies policies(mesh);
-  policies.initialize(mesh, mesh.points(), apps::Kernel());
+  policies.initialize(mesh, mesh.points(), test_meshes::Kernel());
   const double k_o = (std::sqrt(6.0) + std::sqrt(3.0)) / 6;
   const double k_x = (2 / std::sqrt(6.0) + 2 / std::sqrt(2.0)) / 3;
   EXPECT_NEAR(policies.approximate_curvature(vertex_at(mesh, o)), k_o, 1e-15);
@@ -105,11 +110,11 @@ TEST(CurvatureWeightedQuadricPolicies,
      ASymmetricSawtoothCostsEpsTimesQemByDefaultAndNothingLiterally) {
   Mesh mesh = sawtooth();
   const Policies policies(mesh);
-  const Policies literal(mesh, kEps, 1000, cgal_policies::Face_weighting::unit, true);
-  const cgal_policies::Classic_quadric_policies<Mesh, apps::Kernel> classic(mesh);
-  policies.initialize(mesh, mesh.points(), apps::Kernel());
-  literal.initialize(mesh, mesh.points(), apps::Kernel());
-  classic.initialize(mesh, mesh.points(), apps::Kernel());
+  const Policies literal(mesh, literal_options());
+  const cgal_policies::Classic_quadric_policies<Mesh, test_meshes::Kernel> classic(mesh);
+  policies.initialize(mesh, mesh.points(), test_meshes::Kernel());
+  literal.initialize(mesh, mesh.points(), test_meshes::Kernel());
+  classic.initialize(mesh, mesh.points(), test_meshes::Kernel());
 
   // From a ridge down to a valley, in the middle: both ends and all their neighbours have K = 1.
   const auto h = halfedge_between(mesh, {3, 2, 1}, {4, 2, 0});
@@ -126,7 +131,7 @@ TEST(CurvatureWeightedQuadricPolicies,
 TEST(CurvatureWeightedQuadricPolicies, TheTieBreakTakesTheShorterEdgeFirstOnAPlane) {
   Mesh mesh = flat_grid(4);
   const Policies policies(mesh);
-  policies.initialize(mesh, mesh.points(), apps::Kernel());
+  policies.initialize(mesh, mesh.points(), test_meshes::Kernel());
   const double side = edge_cost(policies, mesh, halfedge_between(mesh, {1, 1, 0}, {2, 1, 0}));
   const double diagonal = edge_cost(policies, mesh, halfedge_between(mesh, {1, 1, 0}, {2, 2, 0}));
   EXPECT_EQ(side, Policies::tie_break_weight);
@@ -142,8 +147,8 @@ TEST(CurvatureWeightedQuadricPolicies, CostsScaleWithTheSquaredSizeOfTheMesh) {
   };
   Mesh small = bumps(1.0), large = bumps(8.0);
   const Policies small_policies(small), large_policies(large);
-  small_policies.initialize(small, small.points(), apps::Kernel());
-  large_policies.initialize(large, large.points(), apps::Kernel());
+  small_policies.initialize(small, small.points(), test_meshes::Kernel());
+  large_policies.initialize(large, large.points(), test_meshes::Kernel());
   for (auto h : halfedges(small)) {
     if (is_border(h, small)) continue;
     EXPECT_DOUBLE_EQ(edge_cost(large_policies, large, h), 64 * edge_cost(small_policies, small, h));
@@ -200,7 +205,10 @@ TEST(CurvatureWeightedQuadricPolicies, TheFlatPartLosesItsFacesFirst) {
   const Policies policies(mesh);
   // The flat half holds 128 of the 256 faces; remove 96, that is 48 vertices.
   SMS::edge_collapse(
-      mesh, apps::Face_count_stop_predicate(mesh, 160),
+      mesh,
+      [&mesh](const auto&, const auto&, std::size_t, std::size_t) {
+        return mesh.number_of_faces() <= 160;
+      },
       CGAL::parameters::get_cost(policies.get_cost()).get_placement(policies.get_placement()));
   mesh.collect_garbage();
   ASSERT_LE(mesh.number_of_faces(), 160u);

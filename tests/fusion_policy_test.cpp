@@ -1,4 +1,4 @@
-// Unit tests of Feature_fusion_policies and its measures (policies.md §2): the side ratio of eq. 9,
+// Unit tests of Feature_fusion_policies and its measures (docs/fusion.md): the side ratio of eq. 9,
 // the normal twist, the normal factor, their refresh after collapses, and scale invariance.
 #include "test_meshes.h"
 
@@ -23,11 +23,17 @@
 namespace {
 
 namespace SMS = CGAL::Surface_mesh_simplification;
-using apps::Kernel;
+using test_meshes::Kernel;
 using test_meshes::Mesh;
 using test_meshes::Point;
 using Policies = cgal_policies::Feature_fusion_policies<Mesh, Kernel>;
 using Vertex = Mesh::Vertex_index;
+
+cgal_policies::Feature_fusion_options with_visual_weight(double visual_weight) {
+  cgal_policies::Feature_fusion_options options;
+  options.visual_weight = visual_weight;
+  return options;
+}
 
 // The unit sphere as an icosahedron split `levels` times into four, new points pushed onto it.
 Mesh icosphere(int levels) {
@@ -156,7 +162,7 @@ TEST(FusionTwist, IsLargeOnASaddle) {
 
 TEST(FusionNormalFactor, IsExactlyOneAndTwistZeroOnAFlatPatch) {
   Mesh mesh = test_meshes::flat_grid(5);
-  const Policies policies(mesh, 2.0, 0.02);
+  const Policies policies(mesh, with_visual_weight(0.02));
   policies.initialize(mesh, get(CGAL::vertex_point, mesh), Kernel());
   EXPECT_DOUBLE_EQ(policies.input_mean_edge_length(), (60.0 + 25 * std::sqrt(2.0)) / 85.0);
   for (auto e : edges(mesh)) {
@@ -168,7 +174,7 @@ TEST(FusionNormalFactor, IsExactlyOneAndTwistZeroOnAFlatPatch) {
 
 TEST(FusionNormalFactor, GrowsWithTheNormalAngles) {
   Mesh mesh = test_meshes::icosahedron();
-  const Policies policies(mesh, 2.0, 0.02);
+  const Policies policies(mesh, with_visual_weight(0.02));
   policies.initialize(mesh, get(CGAL::vertex_point, mesh), Kernel());
   // Every vertex normal of the icosahedron makes the same angle with its five neighbours'.
   const double expected = 1.0 + 2.0 * std::acos(1.0 / std::sqrt(5.0));
@@ -212,9 +218,9 @@ Mesh bumpy_patch() {
 
 // Simplifies `mesh` and checks the stored normal factors and twists against a fresh computation.
 void expect_features_of_the_current_mesh(Mesh mesh, double visual_weight) {
-  const Policies policies(mesh, Policies::default_mu, visual_weight);
+  const Policies policies(mesh, with_visual_weight(visual_weight));
   ASSERT_GT(simplify(mesh, 300, policies).size(), 500u);
-  const Policies fresh(mesh, Policies::default_mu, visual_weight);
+  const Policies fresh(mesh, with_visual_weight(visual_weight));
   fresh.initialize(mesh, get(CGAL::vertex_point, mesh), Kernel());
   double largest_twist = 0;
   for (auto e : edges(mesh)) {
@@ -240,7 +246,8 @@ void expect_scale_invariant(const Mesh& input, std::size_t edges_left) {
   CGAL::Polygon_mesh_processing::transform(Kernel::Aff_transformation_3(CGAL::SCALING, 1000),
                                            large);
   // With the visual term on, so that both terms of the cost are checked.
-  const Policies small_policies(small, 2.0, 0.02), large_policies(large, 2.0, 0.02);
+  const Policies small_policies(small, with_visual_weight(0.02)),
+      large_policies(large, with_visual_weight(0.02));
   const auto small_collapses = simplify(small, edges_left, small_policies);
   const auto large_collapses = simplify(large, edges_left, large_policies);
   ASSERT_GT(small_collapses.size(), 0u);
@@ -259,10 +266,10 @@ TEST(FusionPolicies, ScaledByAThousandCollapsesTheSameEdgesToTheSamePoints) {
 }
 
 TEST(FusionPolicies, ScaleInvariantOnARealMesh) {
-  SKIP_WITHOUT_SHARED_DATA();
+  SKIP_IF_REAL_MESHES_ARE_OFF();
   // Not the cow: it is mirror-symmetric, so its costs tie exactly and round-off breaks the ties
   // differently at another scale.
-  const Mesh bunny = apps::read_triangle_mesh(test_meshes::shared_data("bunny.obj"));
+  const Mesh bunny = test_meshes::read_clean_mesh("bunny.obj");
   expect_scale_invariant(bunny, bunny.number_of_edges() / 2);
 }
 

@@ -4,6 +4,8 @@
 #include "common/mesh_measures.h"
 #include "test_meshes.h"
 
+#include "common/mesh_io.h"
+
 #include <cgal_policies/Hausdorff_bounded_placement.h>
 #include <cgal_policies/Hausdorff_move_guard.h>
 #include <cgal_policies/Laplacian_smoother.h>
@@ -196,9 +198,9 @@ TEST(HausdorffBoundedPlacement, LocalModeAccumulatesWhileGlobalModeKeepsTheBound
 // tolerance, smoothing off and bounded smoothing on. (The registry's "hausdorff" entry runs the
 // same classes; property_test checks it like every policy.)
 TEST(HausdorffBoundedPlacement, GlobalModeKeepsTheTwoSidedBoundOnRealMeshes) {
-  SKIP_WITHOUT_SHARED_DATA();
+  SKIP_IF_REAL_MESHES_ARE_OFF();
   for (const std::string name : {"bunny.obj", "fandisk.obj", "teapot.obj", "rocker-arm.obj"}) {
-    const Mesh original = apps::read_triangle_mesh(test_meshes::shared_data(name));
+    const Mesh original = apps::read_triangle_mesh(test_meshes::data_file(name));
     for (const double tolerance : {0.001, 0.005, 0.01}) {
       for (const bool smooth : {false, true}) {
         Mesh mesh = original;

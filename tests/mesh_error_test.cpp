@@ -1,5 +1,7 @@
-// The two-sided Metro-style evaluator behind mesh_error (evaluation.md).
+// The two-sided Metro-style evaluator behind mesh_error (docs/evaluation.md).
 #include "test_meshes.h"
+
+#include "common/mesh_io.h"
 
 #include "common/mesh_measures.h"
 #include "common/policy_registry.h"
@@ -94,8 +96,8 @@ TEST(MeshError, AMissingPartShowsInOneDirectionOnly) {
 }
 
 TEST(MeshError, IsDeterministicAndItsDefaultSamplingIsDenseEnough) {
-  SKIP_WITHOUT_SHARED_DATA();
-  const Mesh bunny = apps::read_triangle_mesh(shared_data("bunny.obj"));
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const Mesh bunny = apps::read_triangle_mesh(data_file("bunny.obj"));
   const Mesh simplified = simplified_by_gh(bunny, 0.1);
 
   const apps::Mesh_error once = apps::measure_mesh_error(bunny, simplified);
@@ -113,8 +115,8 @@ TEST(MeshError, IsDeterministicAndItsDefaultSamplingIsDenseEnough) {
 TEST(MeshError, AgreesWithCgalsCertifiedHausdorffDistanceOnTheBunny) {
   // CGAL's bounded_error_Hausdorff_distance subdivides triangles until its answer is certain to
   // within the bound: an independent check of the sampled maxima, which can only fall short.
-  SKIP_WITHOUT_SHARED_DATA();
-  const Mesh bunny = apps::read_triangle_mesh(shared_data("bunny.obj"));
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const Mesh bunny = apps::read_triangle_mesh(data_file("bunny.obj"));
   const Mesh simplified = simplified_by_gh(bunny, 0.1);
   const double bound = 1e-4 * apps::bbox_diagonal(bunny);
   namespace PMP = CGAL::Polygon_mesh_processing;

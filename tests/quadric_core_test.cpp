@@ -1,7 +1,8 @@
-// The shared quadric core (policies.md §0) and Classic_quadric_policies, on tiny meshes with exact
-// expectations.
+// The shared quadric core (docs/quadric_core.md), Classic_quadric_policies and
+// Bounded_normal_angle_filter, on tiny meshes with exact expectations.
 #include "test_meshes.h"
 
+#include <cgal_policies/Bounded_normal_angle_filter.h>
 #include <cgal_policies/Classic_quadric_policies.h>
 #include <cgal_policies/internal/plane_quadrics.h>
 #include <cgal_policies/internal/quadric_placement.h>
@@ -53,8 +54,8 @@ TEST(Quadric, AreaWeightingMultipliesByTheFaceArea) {
 
 TEST(ClassicQuadricPolicies, EveryEdgeOfAFlatGridCostsZero) {
   Mesh mesh = flat_grid(3);
-  const cgal_policies::Classic_quadric_policies<Mesh, apps::Kernel> policies(mesh);
-  policies.initialize(mesh, mesh.points(), apps::Kernel());
+  const cgal_policies::Classic_quadric_policies<Mesh, Kernel> policies(mesh);
+  policies.initialize(mesh, mesh.points(), Kernel());
   for (auto h : halfedges(mesh)) {
     if (is_border(h, mesh)) continue;
     const Profile profile = edge_profile(mesh, h);
@@ -141,7 +142,7 @@ TEST(BorderPlanes, KeepABorderVertexOnItsBorderLine) {
 
 TEST(BorderPlanes, ASimplifiedGridKeepsItsOutline) {
   Mesh mesh = flat_grid(8);
-  const cgal_policies::Classic_quadric_policies<Mesh, apps::Kernel> policies(mesh);
+  const cgal_policies::Classic_quadric_policies<Mesh, Kernel> policies(mesh);
   CGAL::Surface_mesh_simplification::edge_collapse(
       mesh, CGAL::Surface_mesh_simplification::Count_stop_predicate<Mesh>(20),
       CGAL::parameters::get_cost(policies.get_cost()).get_placement(policies.get_placement()));
@@ -154,6 +155,52 @@ TEST(BorderPlanes, ASimplifiedGridKeepsItsOutline) {
       EXPECT_TRUE(p.x() == 0 || p.x() == 8 || p.y() == 0 || p.y() == 8) << p;
     }
   }
+}
+
+// The filter's verdict on collapsing the edge (2,2) -> (3,2) of the 4 x 4 flat grid to p. The
+// link of the merged vertex is the octagon (1,1) (2,1) (3,1) (4,2) (4,3) (3,3) (2,3) (1,2), whose
+// nearest edges lie at distance 1 from (2.5, 2).
+bool angle_filter_accepts(double max_angle_degrees, const Point& p) {
+  Mesh mesh = flat_grid(4);
+  const Profile profile = edge_profile(mesh, halfedge_between(mesh, {2, 2, 0}, {3, 2, 0}));
+  const cgal_policies::Bounded_normal_angle_filter<> filter(max_angle_degrees);
+  return bool(filter(profile, cgal_policies::internal::Optional<Point>(p)));
+}
+
+TEST(BoundedNormalAngleFilter, AcceptsAPlacementInThePlane) {
+  EXPECT_TRUE(angle_filter_accepts(90, {2.5, 2, 0}));
+  EXPECT_TRUE(angle_filter_accepts(1, {2.5, 2, 0}));
+}
+
+TEST(BoundedNormalAngleFilter, RefusesAFold) {
+  // Beyond the link edge y = 1, the faces on that edge turn upside down.
+  EXPECT_FALSE(angle_filter_accepts(90, {2.5, 0.5, 0}));
+  EXPECT_FALSE(angle_filter_accepts(179, {2.5, 0.5, 0}));
+}
+
+TEST(BoundedNormalAngleFilter, RefusesAFaceLeftDegenerate) {
+  // On the link edge (2,1)-(3,1), the face over that edge has no area left.
+  EXPECT_FALSE(angle_filter_accepts(180, {2.5, 1, 0}));
+}
+
+TEST(BoundedNormalAngleFilter, TheBoundIsTheLargestTurnOfAFaceNormal) {
+  // Lifted by 1 over (2.5, 2), the faces over the nearest link edges tilt by atan(1 / 1) = 45
+  // degrees, and no face tilts more.
+  const Point lifted(2.5, 2, 1);
+  EXPECT_TRUE(angle_filter_accepts(90, lifted));
+  EXPECT_TRUE(angle_filter_accepts(45.5, lifted));
+  EXPECT_FALSE(angle_filter_accepts(44.5, lifted));
+  EXPECT_FALSE(angle_filter_accepts(30, lifted));
+}
+
+TEST(BoundedNormalAngleFilter, RunsItsBaseFilterFirst) {
+  Mesh mesh = flat_grid(4);
+  const Profile profile = edge_profile(mesh, halfedge_between(mesh, {2, 2, 0}, {3, 2, 0}));
+  const auto refuse_all = [](const Profile&, cgal_policies::internal::Optional<Point>) {
+    return cgal_policies::internal::Optional<Point>();
+  };
+  const cgal_policies::Bounded_normal_angle_filter<decltype(refuse_all)> filter(90, refuse_all);
+  EXPECT_FALSE(filter(profile, cgal_policies::internal::Optional<Point>(Point(2.5, 2, 0))));
 }
 
 }  // namespace

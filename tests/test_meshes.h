@@ -1,12 +1,16 @@
-// Tiny meshes built by hand for exact tests, and access to the shared real meshes.
+// Tiny meshes built by hand for exact tests, and access to the real meshes of data/. It needs the
+// library and CGAL only, so that the library's own tests link nothing of the apps.
 #ifndef CGAL_POLICIES_TESTS_TEST_MESHES_H
 #define CGAL_POLICIES_TESTS_TEST_MESHES_H
 
-#include "common/Mesh_types.h"
-#include "common/mesh_io.h"
-
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
+#include <CGAL/Polygon_mesh_processing/shape_predicates.h>
+#include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Edge_profile.h>
 #include <CGAL/boost/graph/generators.h>
+#include <CGAL/boost/graph/helpers.h>
 
 #include <gtest/gtest.h>
 
@@ -17,8 +21,10 @@
 
 namespace test_meshes {
 
-using apps::Mesh;
-using apps::Point;
+// The types of the apps (apps/common/Mesh_types.h), so that both kinds of tests share meshes.
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
 
 // A mesh from points and triangles given as index triples.
 inline Mesh from_triangles(const std::vector<Point>& points,
@@ -60,11 +66,11 @@ inline Mesh tetrahedron() {
 }
 
 using Profile = CGAL::Surface_mesh_simplification::Edge_profile<
-    Mesh, Mesh::Property_map<Mesh::Vertex_index, Point>, apps::Kernel>;
+    Mesh, Mesh::Property_map<Mesh::Vertex_index, Point>, Kernel>;
 
 // The profile edge_collapse would hand to the policies for the collapse of h (source into target).
 inline Profile edge_profile(Mesh& mesh, Mesh::Halfedge_index h) {
-  static const apps::Kernel kernel;
+  static const Kernel kernel;
   return Profile(h, mesh, kernel, 0, mesh.points(), 0, true);
 }
 
@@ -76,11 +82,43 @@ inline Mesh::Halfedge_index halfedge_between(const Mesh& mesh, const Point& a, c
   return Mesh::null_halfedge();
 }
 
-inline std::string shared_data(const std::string& name) {
-  return std::string(CGAL_POLICIES_SHARED_DATA) + "/" + name;
+// A mesh of the project's data/ folder.
+inline std::string data_file(const std::string& name) {
+  return std::string(CGAL_POLICIES_DATA_DIR) + "/" + name;
 }
 
-inline bool shared_data_available() { return std::filesystem::exists(shared_data("bunny.obj")); }
+// A clean mesh of data/ read as it is, with CGAL's reader (no repairs); a test failure otherwise.
+inline Mesh read_clean_mesh(const std::string& name) {
+  Mesh mesh;
+  if (!CGAL::IO::read_polygon_mesh(data_file(name), mesh) || !CGAL::is_triangle_mesh(mesh))
+    ADD_FAILURE() << name << " is not a clean triangle mesh";
+  return mesh;
+}
+
+// A valid halfedge structure made of triangles only.
+inline bool is_valid_triangle_mesh(const Mesh& mesh) {
+  return CGAL::is_valid_polygon_mesh(mesh) && CGAL::is_triangle_mesh(mesh);
+}
+
+inline std::size_t border_edge_count(const Mesh& mesh) {
+  std::size_t count = 0;
+  for (auto e : edges(mesh)) count += CGAL::is_border(e, mesh) ? 1 : 0;
+  return count;
+}
+
+inline std::size_t non_manifold_vertex_count(const Mesh& mesh) {
+  std::size_t count = 0;
+  for (auto v : vertices(mesh))
+    count += CGAL::Polygon_mesh_processing::is_non_manifold_vertex(v, mesh) ? 1 : 0;
+  return count;
+}
+
+inline std::size_t degenerate_face_count(const Mesh& mesh) {
+  std::size_t count = 0;
+  for (auto f : faces(mesh))
+    count += CGAL::Polygon_mesh_processing::is_degenerate_triangle_face(f, mesh) ? 1 : 0;
+  return count;
+}
 
 // CI's sanitizer pass sets CGAL_POLICIES_SKIP_REAL_MESHES: real meshes are many times slower
 // to simplify in an instrumented Debug build, and the Release pass runs them all.
@@ -90,12 +128,9 @@ inline bool real_meshes_skipped() {
 
 }  // namespace test_meshes
 
-// Skips the current test, with a message, when ../shared/data is not beside the project or real
-// meshes are skipped on purpose.
-#define SKIP_WITHOUT_SHARED_DATA()                                                              \
+// Skips the current test, with a message, in CI's sanitized pass (CGAL_POLICIES_SKIP_REAL_MESHES).
+#define SKIP_IF_REAL_MESHES_ARE_OFF()                                                           \
   do {                                                                                          \
-    if (!test_meshes::shared_data_available())                                                  \
-      GTEST_SKIP() << "../shared/data is absent: real-mesh tests need it beside the project";   \
     if (test_meshes::real_meshes_skipped())                                                     \
       GTEST_SKIP() << "CGAL_POLICIES_SKIP_REAL_MESHES is set: real meshes run in Release only"; \
   } while (0)

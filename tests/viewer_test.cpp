@@ -8,6 +8,8 @@
 #include "common/policy_registry.h"
 #include "test_meshes.h"
 
+#include "common/mesh_io.h"
+
 #include <stb_image.h>
 
 #include <gtest/gtest.h>
@@ -89,14 +91,14 @@ void expect_every_policy_replays(const Mesh& input, const std::vector<std::size_
     EXPECT_EQ(std::count(replayed.begin(), replayed.end(), name), 1) << name;
 }
 
-TEST(Collapse_replay, EveryFaceCountOfTheIcosahedronEqualsStraightSimplification) {
+TEST(CollapseReplay, EveryFaceCountOfTheIcosahedronEqualsStraightSimplification) {
   const Mesh ico = test_meshes::icosahedron();
   std::vector<std::size_t> counts;
   for (std::size_t f = 20; f >= 1; --f) counts.push_back(f);
   expect_every_policy_replays(ico, counts);
 }
 
-TEST(Collapse_replay, EachCollapseRemovesOneFaceOnTheBorderAndTwoInside) {
+TEST(CollapseReplay, EachCollapseRemovesOneFaceOnTheBorderAndTwoInside) {
   const Mesh grid = test_meshes::flat_grid(4);  // 32 triangles
   const Collapse_history history = record_all(grid, *apps::find_policy("classic"));
   const Collapse_replay replay(grid, history);
@@ -118,15 +120,15 @@ TEST(Collapse_replay, EachCollapseRemovesOneFaceOnTheBorderAndTwoInside) {
   EXPECT_EQ(replay.step_for_target(0), replay.steps());
 }
 
-TEST(Collapse_replay, RealMeshAtSeveralCountsEqualsStraightSimplification) {
-  SKIP_WITHOUT_SHARED_DATA();
-  Mesh fandisk = apps::read_triangle_mesh(test_meshes::shared_data("fandisk.obj"));
+TEST(CollapseReplay, RealMeshAtSeveralCountsEqualsStraightSimplification) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  Mesh fandisk = apps::read_triangle_mesh(test_meshes::data_file("fandisk.obj"));
   fandisk.collect_garbage();
   const std::size_t f = fandisk.number_of_faces();
   expect_every_policy_replays(fandisk, {f, f - 1, f / 2 + 1, f / 10, f / 100, 4});
 }
 
-TEST(Latest_task, OnlyTheLatestJobHandsBackItsResult) {
+TEST(LatestTask, OnlyTheLatestJobHandsBackItsResult) {
   apps::Latest_task<int> task;
   std::promise<void> started, release;
   std::shared_future<void> released = release.get_future().share();
@@ -144,14 +146,14 @@ TEST(Latest_task, OnlyTheLatestJobHandsBackItsResult) {
   EXPECT_EQ(task.take(), std::nullopt);  // once
 }
 
-TEST(Latest_task, RethrowsTheJobsError) {
+TEST(LatestTask, RethrowsTheJobsError) {
   apps::Latest_task<int> task;
   task.submit([]() -> int { throw std::runtime_error("policy failed"); });
   while (task.busy()) std::this_thread::yield();
   EXPECT_THROW(task.take(), std::runtime_error);
 }
 
-TEST(Surface_distance, DistancesToAFlatGridAreHeights) {
+TEST(SurfaceDistance, DistancesToAFlatGridAreHeights) {
   const apps::Surface_distance distance(test_meshes::flat_grid(2));
   EXPECT_DOUBLE_EQ(distance(Point(1, 1, 0.5)), 0.5);
   EXPECT_DOUBLE_EQ(distance(Point(3, 1, 0)), 1.0);  // beyond the border x = 2
@@ -166,7 +168,7 @@ TEST(Surface_distance, DistancesToAFlatGridAreHeights) {
   EXPECT_DOUBLE_EQ(distance.vertex_distances(lifted, cache)[0], 0.25);
 }
 
-TEST(Render_mesh, FrameCentresTheOriginalAtUnitDiagonal) {
+TEST(RenderMesh, FrameCentresTheOriginalAtUnitDiagonal) {
   const Indexed_mesh grid = Indexed_mesh::from_mesh(test_meshes::flat_grid(2));  // [0,2]^2
   const apps::Mesh_frame frame = apps::Mesh_frame::of(grid);
   EXPECT_EQ(frame.center, Point(1, 1, 0));
@@ -231,8 +233,8 @@ Picture load_png(const std::string& path) {
 }
 
 TEST_F(Snapshot, BunnyAtTenPercentIsCentredAndDiffersFromFiftyPercent) {
-  SKIP_WITHOUT_SHARED_DATA();
-  const std::string bunny = test_meshes::shared_data("bunny.obj");
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const std::string bunny = test_meshes::data_file("bunny.obj");
   ASSERT_EQ(run_viewer(bunny + " --policy classic --ratio 0.1 --size 640x300 --snapshot " +
                        path("ten.png")),
             0);
@@ -270,8 +272,8 @@ TEST_F(Snapshot, BunnyAtTenPercentIsCentredAndDiffersFromFiftyPercent) {
 }
 
 TEST_F(Snapshot, HeatMapColoursTheSimplifiedPane) {
-  SKIP_WITHOUT_SHARED_DATA();
-  ASSERT_EQ(run_viewer(test_meshes::shared_data("fandisk.obj") +
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  ASSERT_EQ(run_viewer(test_meshes::data_file("fandisk.obj") +
                        " --policy classic --ratio 0.02 --heat-map --size 400x200 --snapshot " +
                        path("heat.png")),
             0);
@@ -308,9 +310,9 @@ TEST_F(Snapshot, BadArgumentsAndUnwritableOutputsHaveTheirExitCodes) {
 }
 
 TEST_F(Snapshot, SimplifyWritesTheMeshAndItsPicture) {
-  SKIP_WITHOUT_SHARED_DATA();
+  SKIP_IF_REAL_MESHES_ARE_OFF();
   ASSERT_EQ(
-      run_simplify(test_meshes::shared_data("bunny.obj") + " " + path("bunny.off") +
+      run_simplify(test_meshes::data_file("bunny.obj") + " " + path("bunny.off") +
                    " 0.1 --policy gh --json --snapshot " + path("bunny.png") + " --size 320x240"),
       0)
       << output_text();

@@ -18,7 +18,7 @@ std::vector<Bench_target> seed_000_levels(const std::string& model, std::size_t 
   for (std::size_t level : paper_levels)
     levels.push_back(ratio(
         double(level) / double(paper_faces),
-        "seed 000 " + model + " " + std::to_string(level) + "/" + std::to_string(paper_faces)));
+        "[Wang13] " + model + " " + std::to_string(level) + "/" + std::to_string(paper_faces)));
   return levels;
 }
 
@@ -33,7 +33,7 @@ std::vector<T> concat(std::vector<T> a, const std::vector<T>& b) {
 const std::vector<Bench_preset>& bench_presets() {
   static const std::vector<Bench_preset> presets = {
       {"standard",
-       "the standard cases of evaluation.md",
+       "the standard cases of docs/evaluation.md",
        {{"bunny.obj", {ratio(0.5), ratio(0.1), ratio(0.01)}},
         {"fandisk.obj", {ratio(0.1), ratio(0.02)}},
         {"nefertiti.obj", {ratio(0.1), ratio(0.01)}},
@@ -43,13 +43,13 @@ const std::vector<Bench_preset>& bench_presets() {
        200000,
        600},
       {"papers",
-       "the papers' experiments: seed 000 (four levels per model), seed 004 (cow), seed 002 "
+       "the papers' experiments: [Wang13] (four levels per model), [Zhang09] (cow), [Hu14] "
        "(dragon to 1%)",
        {{"woody.obj", seed_000_levels("dog", 1331, {1078, 865, 411, 168})},
         {"cow.obj", concat(seed_000_levels("cow", 12397, {8141, 4635, 2117, 747}),
-                           {faces(4940, "seed 004 cow"), faces(2924, "seed 004 cow")})},
+                           {faces(4940, "[Zhang09] cow"), faces(2924, "[Zhang09] cow")})},
         {"dragon_res2.ply", concat(seed_000_levels("hand", 263595, {96894, 31984, 12089, 8928}),
-                                   {ratio(0.01, "seed 002 dragon 1%")})},
+                                   {ratio(0.01, "[Hu14] dragon 1%")})},
         // The paper prints the second level as "389 663 / 71 145" (columns swapped): 71145 faces.
         {"dragon.ply", seed_000_levels("dragon", 779275, {358853, 71145, 3837, 1919})}},
        3,

@@ -1,5 +1,5 @@
-// The cases simplify_bench runs: meshes with their targets, as named presets (evaluation.md and the
-// papers' experiments) or given on the command line.
+// The cases simplify_bench runs: meshes with their targets, as named presets (docs/evaluation.md
+// and the papers' experiments) or given on the command line.
 #ifndef CGAL_POLICIES_APPS_BENCH_BENCH_PRESETS_H
 #define CGAL_POLICIES_APPS_BENCH_BENCH_PRESETS_H
 
@@ -13,7 +13,7 @@ namespace apps {
 struct Bench_target {
   double ratio = 0;
   std::size_t faces = 0;
-  std::string label;  // where the case comes from, e.g. "seed 004: 4940 faces"; may be empty
+  std::string label;  // where the case comes from, e.g. "[Zhang09]: 4940 faces"; may be empty
 };
 
 struct Bench_mesh {

@@ -54,7 +54,7 @@ std::string target_cell(const Run_record& r) {
 }
 
 bool reached(const Run_record& r) { return r.output_faces <= r.target_faces; }
-bool timed_out(const Run_record& r) { return r.stop_reason == "time_limit"; }
+bool timed_out(const Run_record& r) { return r.stop_reason == to_string(Stop_reason::time_limit); }
 
 std::string faces_cell(const Run_record& r) {
   return std::to_string(r.output_faces) + (timed_out(r) ? "†" : reached(r) ? "" : "*");

@@ -73,14 +73,14 @@ Run_record run_policy(const Mesh& original, const Policy_entry& policy, const Be
     record.memory_added_mib = std::max(record.memory_added_mib, memory.added_mib());
     seconds.push_back(outcome.seconds);
     if (rep == 0) {
-      record.stop_reason = outcome.stop_reason;
+      record.stop_reason = to_string(outcome.stop_reason);
       result = std::move(mesh);
     } else if (mesh.number_of_faces() != result.number_of_faces()) {
       std::fprintf(stderr, "simplify_bench: %s: %s is not deterministic (%zu then %zu faces)\n",
                    case_name.c_str(), policy.name.c_str(), std::size_t(result.number_of_faces()),
                    std::size_t(mesh.number_of_faces()));
     }
-    if (outcome.stop_reason == "time_limit") {
+    if (outcome.stop_reason == Stop_reason::time_limit) {
       record.repetitions = rep + 1;
       break;
     }

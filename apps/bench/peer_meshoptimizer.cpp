@@ -36,18 +36,21 @@ Simplify_outcome run_meshoptimizer(Mesh& mesh, const Simplify_settings& settings
   for (std::size_t i = 0; i + 2 < count; i += 3)
     result.triangles.push_back({output[i], output[i + 1], output[i + 2]});
   mesh = to_mesh(result);
-  outcome.stop_reason =
-      mesh.number_of_faces() <= settings.target_faces ? "target_reached" : "no_collapse_left";
+  outcome.stop_reason = mesh.number_of_faces() <= settings.target_faces
+                            ? Stop_reason::target_reached
+                            : Stop_reason::no_collapse_left;
   return outcome;
 }
 
 }  // namespace
 
 std::vector<Policy_entry> meshoptimizer_peers() {
-  return {{"meshopt",
-           "meshoptimizer meshopt_simplify (collapses onto existing vertices)",
-           {},
-           run_meshoptimizer}};
+  Policy_entry meshopt{"meshopt",
+                       "meshoptimizer meshopt_simplify (collapses onto existing vertices)",
+                       {},
+                       run_meshoptimizer};
+  meshopt.takes_error_bound = false;
+  return {meshopt};
 }
 
 }  // namespace apps

@@ -58,16 +58,19 @@ Simplify_outcome run_openmesh(Mesh& mesh, const Simplify_settings& settings) {
     result.triangles.push_back(t);
   }
   mesh = to_mesh(result);
-  outcome.stop_reason =
-      mesh.number_of_faces() <= settings.target_faces ? "target_reached" : "no_collapse_left";
+  outcome.stop_reason = mesh.number_of_faces() <= settings.target_faces
+                            ? Stop_reason::target_reached
+                            : Stop_reason::no_collapse_left;
   return outcome;
 }
 
 }  // namespace
 
 std::vector<Policy_entry> openmesh_peers() {
-  return {
-      {"openmesh", "OpenMesh Decimater with ModQuadric and ModNormalFlipping", {}, run_openmesh}};
+  Policy_entry openmesh{
+      "openmesh", "OpenMesh Decimater with ModQuadric and ModNormalFlipping", {}, run_openmesh};
+  openmesh.takes_error_bound = false;
+  return {openmesh};
 }
 
 }  // namespace apps

@@ -1,4 +1,4 @@
-// Exit codes shared by every app (DESIGN.md) and the one exception that carries them to main().
+// Exit codes shared by every app (README.md) and the one exception that carries them to main().
 #ifndef CGAL_POLICIES_APPS_APP_ERROR_H
 #define CGAL_POLICIES_APPS_APP_ERROR_H
 

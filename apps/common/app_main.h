@@ -1,5 +1,5 @@
 // The outer frame of every app's main(): turns any failure into one line on stderr, "<app>: <file>:
-// <cause>", and the exit code of DESIGN.md.
+// <cause>", and the exit code of README.md.
 #ifndef CGAL_POLICIES_APPS_APP_MAIN_H
 #define CGAL_POLICIES_APPS_APP_MAIN_H
 

@@ -12,32 +12,47 @@
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 
 #include <chrono>
+#include <optional>
 
 namespace apps {
 
 // Stops once the mesh has no more than the target number of faces, or once the deadline has passed
-// when there is one (a time limit of 0 sets none).
+// when there is one (a time limit of 0 sets none), and records which of the two stopped the run
+// when given somewhere to record it.
 class Face_count_stop_predicate {
  public:
   using Clock = std::chrono::steady_clock;
 
-  Face_count_stop_predicate(const Mesh& mesh, std::size_t target, double time_limit_seconds = 0)
-      : m_mesh(&mesh), m_target(target), m_has_deadline(time_limit_seconds > 0) {
+  Face_count_stop_predicate(const Mesh& mesh, std::size_t target, double time_limit_seconds = 0,
+                            std::optional<Stop_reason>* reason = nullptr)
+      : m_mesh(&mesh), m_target(target), m_has_deadline(time_limit_seconds > 0), m_reason(reason) {
     if (m_has_deadline)
       m_deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                       std::chrono::duration<double>(time_limit_seconds));
   }
   template <typename FT, typename Profile>
   bool operator()(const FT&, const Profile&, std::size_t, std::size_t) const {
-    return m_mesh->number_of_faces() <= m_target || out_of_time();
+    std::optional<Stop_reason> reason;
+    if (m_mesh->number_of_faces() <= m_target)
+      reason = Stop_reason::target_reached;
+    else if (m_has_deadline && Clock::now() >= m_deadline)
+      reason = Stop_reason::time_limit;
+    if (reason && m_reason) *m_reason = reason;
+    return bool(reason);
   }
-  bool out_of_time() const { return m_has_deadline && Clock::now() >= m_deadline; }
 
  private:
   const Mesh* m_mesh;
   std::size_t m_target;
   bool m_has_deadline;
   Clock::time_point m_deadline;
+  std::optional<Stop_reason>* m_reason;
+};
+
+// Who keeps a --max-error bound in a run.
+enum class Error_bound_keeper {
+  runner,  // the runner wraps the policy's filter in Hausdorff_bounded_filter
+  policy   // the policy bounds its error itself (hausdorff)
 };
 
 // The collapse the visitor has seen but not reported yet: a cost's update_after_collapse may still
@@ -83,14 +98,17 @@ class Progress_visitor
 
 // With settings.max_error > 0, every placement the policy proposes is certified against the mesh
 // as it is now (the input), in both directions, and the collapse refused otherwise; the run then
-// ends at the target or when no collapse keeps the bound ("no_collapse_left").
+// ends at the target or when no collapse keeps the bound (error_bound_reached).
 template <typename GetCost, typename GetPlacement, typename Filter>
 Simplify_outcome run_edge_collapse(Mesh& mesh, const Simplify_settings& settings,
                                    const GetCost& cost, const GetPlacement& placement,
-                                   const Filter& filter) {
+                                   const Filter& filter,
+                                   Error_bound_keeper keeper = Error_bound_keeper::runner) {
   const auto start = std::chrono::steady_clock::now();
   Pending_collapse pending;
-  const Face_count_stop_predicate stop(mesh, settings.target_faces, settings.time_limit_seconds);
+  std::optional<Stop_reason> stopped;
+  const Face_count_stop_predicate stop(mesh, settings.target_faces, settings.time_limit_seconds,
+                                       &stopped);
   const auto collapse = [&](const auto& outer_filter) {
     CGAL::Surface_mesh_simplification::edge_collapse(
         mesh, stop,
@@ -100,7 +118,7 @@ Simplify_outcome run_edge_collapse(Mesh& mesh, const Simplify_settings& settings
             .visitor(Progress_visitor(mesh, settings, pending)));
   };
   // Outermost: the bound commits what it accepts, so no later check may refuse it (its header).
-  if (settings.max_error > 0)
+  if (settings.max_error > 0 && keeper == Error_bound_keeper::runner)
     collapse(cgal_policies::Hausdorff_bounded_filter<Mesh, Kernel, Filter>(mesh, settings.max_error,
                                                                            filter));
   else
@@ -108,9 +126,12 @@ Simplify_outcome run_edge_collapse(Mesh& mesh, const Simplify_settings& settings
   pending.report(settings);
   Simplify_outcome outcome;
   outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  outcome.stop_reason = mesh.number_of_faces() <= settings.target_faces ? "target_reached"
-                        : stop.out_of_time()                            ? "time_limit"
-                                                                        : "no_collapse_left";
+  // Unless the predicate stopped the run, the queue ran dry (possibly right at the target).
+  if (!stopped && mesh.number_of_faces() <= settings.target_faces)
+    stopped = Stop_reason::target_reached;
+  outcome.stop_reason = stopped                  ? *stopped
+                        : settings.max_error > 0 ? Stop_reason::error_bound_reached
+                                                 : Stop_reason::no_collapse_left;
   return outcome;
 }
 

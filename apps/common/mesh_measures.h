@@ -1,4 +1,4 @@
-// Metro-style two-sided geometric error between two meshes (evaluation.md) and the validity
+// Metro-style two-sided geometric error between two meshes (docs/evaluation.md) and the validity
 // figures of one mesh, shared by mesh_error, simplify --measure and simplify_bench.
 #ifndef CGAL_POLICIES_APPS_MESH_MEASURES_H
 #define CGAL_POLICIES_APPS_MESH_MEASURES_H

@@ -1,4 +1,4 @@
-// The process's peak resident memory, for the reports of evaluation.md.
+// The process's peak resident memory, for the reports of docs/evaluation.md.
 #ifndef CGAL_POLICIES_APPS_PEAK_MEMORY_H
 #define CGAL_POLICIES_APPS_PEAK_MEMORY_H
 

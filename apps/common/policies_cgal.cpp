@@ -1,5 +1,5 @@
-// CGAL's own policies, run as CGAL ships them (no extra filter), as the baselines of policies.md
-// §4.
+// CGAL's own policies, run as CGAL ships them (no extra filter), as the baselines
+// (docs/evaluation.md).
 #include "edge_collapse_runner.h"
 #include "policy_entries.h"
 

@@ -1,3 +1,4 @@
+#include "Policy_options_table.h"
 #include "edge_collapse_runner.h"
 #include "policy_entries.h"
 
@@ -7,11 +8,17 @@
 namespace apps {
 namespace {
 
+using Options = cgal_policies::Quadric_options;
+
+const Policy_options_table<Options>& classic_options() {
+  static const Policy_options_table<Options> table =
+      Policy_options_table<Options>().border_weight().area_weights();
+  return table;
+}
+
 Simplify_outcome run_classic(Mesh& mesh, const Simplify_settings& settings) {
   const cgal_policies::Classic_quadric_policies<Mesh, Kernel> policies(
-      mesh, settings.options.at("border-weight"),
-      settings.options.at("area-weights") != 0 ? cgal_policies::Face_weighting::area
-                                               : cgal_policies::Face_weighting::unit);
+      mesh, classic_options().read(settings.options));
   return run_edge_collapse(
       mesh, settings, policies.get_cost(), policies.get_placement(),
       cgal_policies::Bounded_normal_angle_filter<>(settings.max_normal_angle_deg));
@@ -23,9 +30,7 @@ std::vector<Policy_entry> classic_policies() {
   return {{"classic",
            "cgal_policies Classic_quadric_policies (the QEM tutorial: placement chain, border "
            "planes, flip check)",
-           {{"border-weight", 1000, "weight of the border planes"},
-            {"area-weights", 0, "weight face planes by area", true}},
-           run_classic}};
+           classic_options().options(), run_classic}};
 }
 
 }  // namespace apps

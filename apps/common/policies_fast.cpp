@@ -1,6 +1,6 @@
-// The fast threshold QEM (policies.md §5): it runs its own flat-array engine, not edge_collapse,
-// and is timed and reported like the others (conversions to and from the arrays included).
-#include "App_error.h"
+// The fast threshold QEM (docs/fast.md): it runs its own flat-array engine, not edge_collapse, and
+// is timed and reported like the others (conversions to and from the arrays included).
+#include "Policy_options_table.h"
 #include "policy_entries.h"
 
 #include <cgal_policies/Fast_threshold_simplifier.h>
@@ -10,36 +10,42 @@
 namespace apps {
 namespace {
 
+using Options = cgal_policies::Fast_threshold_options;
+
+const Policy_options_table<Options>& fast_options() {
+  using Table = Policy_options_table<Options>;
+  static const Table table =
+      Table()
+          .number("aggressiveness", &Options::aggressiveness, 0, Table::unbounded,
+                  "a in the threshold 1e-9 (k+3)^a D^2 of pass k", true)
+          .flag("lossless", &Options::lossless, true, "only collapses of zero error")
+          .border_weight();
+  return table;
+}
+
 Simplify_outcome run_fast(Mesh& mesh, const Simplify_settings& settings) {
-  const double aggressiveness = settings.options.at("aggressiveness");
-  if (!(aggressiveness > 0)) throw App_error(exit_usage, "--aggressiveness must be positive");
-  // The bound certifies edge collapses one by one; the engine's passes have no such hook.
-  if (settings.max_error > 0)
-    throw App_error(exit_usage,
-                    "--max-error needs an edge-collapse policy; fast runs its own engine (try "
-                    "classic)");
-  const cgal_policies::Fast_threshold_simplifier simplifier(
-      aggressiveness, settings.options.at("lossless") != 0, settings.max_normal_angle_deg,
-      settings.options.at("border-weight"));
+  Options options = fast_options().read(settings.options);
+  options.max_normal_angle_deg = settings.max_normal_angle_deg;
   const auto start = std::chrono::steady_clock::now();
-  const cgal_policies::Fast_threshold_report report =
-      simplifier(mesh, settings.target_faces, settings.on_progress);
+  const cgal_policies::Fast_threshold_report report = cgal_policies::Fast_threshold_simplifier(
+      options)(mesh, settings.target_faces, settings.on_progress);
   Simplify_outcome outcome;
   outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  outcome.stop_reason = report.target_reached ? "target_reached" : "no_collapse_left";
+  outcome.stop_reason =
+      report.target_reached ? Stop_reason::target_reached : Stop_reason::no_collapse_left;
   return outcome;
 }
 
 }  // namespace
 
 std::vector<Policy_entry> fast_policies() {
-  return {{"fast",
-           "cgal_policies Fast_threshold_simplifier (the 2014 report's threshold passes, with the "
-           "link condition)",
-           {{"aggressiveness", 7, "a in the threshold 1e-9 (k+3)^a D^2 of pass k"},
-            {"lossless", 0, "only collapses of zero error", true},
-            {"border-weight", 1000, "weight of the border planes"}},
-           run_fast}};
+  Policy_entry fast{"fast",
+                    "cgal_policies Fast_threshold_simplifier (the 2014 report's threshold passes, "
+                    "with the link condition)",
+                    fast_options().options(), run_fast};
+  // The bound certifies edge collapses one by one; the engine's passes have no such hook.
+  fast.takes_error_bound = false;
+  return {fast};
 }
 
 }  // namespace apps

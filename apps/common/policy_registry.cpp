@@ -1,10 +1,35 @@
 #include "policy_registry.h"
 
+#include "App_error.h"
+#include "Json_object.h"
 #include "policy_entries.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace apps {
+namespace {
+
+std::string range_text(const Policy_option& o) {
+  const bool has_min = std::isfinite(o.min), has_max = std::isfinite(o.max);
+  const std::string kind = o.is_whole ? "a whole number" : "a number";
+  const std::string min = Json_object::format_number(o.min);
+  const std::string max = Json_object::format_number(o.max);
+  if (has_min && has_max)
+    return kind + " in " + (o.min_is_excluded ? "(" : "[") + min + ", " + max + "]";
+  if (has_min) return kind + (o.min_is_excluded ? " above " : " of at least ") + min;
+  if (has_max) return kind + " of at most " + max;
+  return kind;
+}
+
+bool in_range(const Policy_option& o, double value) {
+  if (o.is_flag) return value == 0 || value == 1;
+  if (o.is_whole && value != std::floor(value)) return false;
+  const bool above_min = o.min_is_excluded ? value > o.min : value >= o.min;
+  return above_min && value <= o.max;
+}
+
+}  // namespace
 
 const std::vector<Policy_entry>& policy_registry() {
   static const std::vector<Policy_entry> registry = [] {
@@ -35,6 +60,27 @@ Simplify_settings default_settings(const Policy_entry& policy, std::size_t targe
   settings.target_faces = target_faces;
   for (const Policy_option& o : policy.options) settings.options[o.name] = o.default_value;
   return settings;
+}
+
+void check_policy_options(const Policy_entry& policy, const Option_values& values) {
+  for (const Policy_option& o : policy.options) {
+    const auto it = values.find(o.name);
+    if (it != values.end() && !in_range(o, it->second))
+      throw App_error(exit_usage, "--" + o.name + " must be " + range_text(o) + " (" + policy.name +
+                                      "), not " + Json_object::format_number(it->second));
+  }
+}
+
+std::string policy_options_help(const Policy_entry& policy) {
+  std::string text;
+  for (const Policy_option& o : policy.options) {
+    text += "      --" + o.name + (o.is_flag ? "" : " X") + "  " + o.help;
+    if (!o.is_flag)
+      text +=
+          " (default " + Json_object::format_number(o.default_value) + "; " + range_text(o) + ")";
+    text += '\n';
+  }
+  return text;
 }
 
 }  // namespace apps

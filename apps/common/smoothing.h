@@ -1,4 +1,4 @@
-// Smoothing as a post-process of any policy (policies.md §3): the command-line options and the
+// Smoothing as a post-process of any policy (docs/hausdorff.md): the command-line options and the
 // run, through cgal_policies::Laplacian_smoother and, in bounded mode, Hausdorff_move_guard.
 #ifndef CGAL_POLICIES_APPS_SMOOTHING_H
 #define CGAL_POLICIES_APPS_SMOOTHING_H

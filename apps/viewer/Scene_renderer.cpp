@@ -2,6 +2,7 @@
 
 #include <stb_easy_font.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 #include <stdexcept>
@@ -199,19 +200,21 @@ void Scene_renderer::set_mesh(Pane pane, const Render_mesh& mesh) {
 }
 
 void Scene_renderer::draw(int width, int height, const Orbit_camera& camera,
-                          const View_options& options, const Scene_captions& captions) {
+                          const View_options& options, const Scene_captions& captions,
+                          int scene_left) {
   m_gl.Viewport(0, 0, width, height);
   m_gl.ClearColor(kBackground[0] / 255.0f, kBackground[1] / 255.0f, kBackground[2] / 255.0f, 1);
   m_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  const int pane_width = width / 2;
+  const int x0 = std::clamp(scene_left, 0, width);
+  const int pane_width = (width - x0) / 2;
   const Eigen::Matrix4f projection =
       Orbit_camera::projection(float(pane_width) / float(std::max(height, 1)));
   for (int pane = 0; pane < 2; ++pane) {
-    m_gl.Viewport(pane * pane_width, 0, pane_width, height);
+    m_gl.Viewport(x0 + pane * pane_width, 0, pane_width, height);
     draw_mesh(m_meshes[pane], camera.view(), projection, options);
   }
   m_gl.Viewport(0, 0, width, height);
-  draw_overlay(width, height, captions);
+  draw_overlay(width, height, x0, captions);
 }
 
 void Scene_renderer::draw_mesh(const Gpu_mesh& mesh, const Eigen::Matrix4f& model_view,
@@ -243,11 +246,12 @@ void Scene_renderer::draw_mesh(const Gpu_mesh& mesh, const Eigen::Matrix4f& mode
   m_gl.Disable(GL_DEPTH_TEST);
 }
 
-void Scene_renderer::draw_overlay(int width, int height, const Scene_captions& captions) {
+void Scene_renderer::draw_overlay(int width, int height, int scene_left,
+                                  const Scene_captions& captions) {
   const float scale = height >= 480 ? 2.0f : 1.0f;
   Overlay_builder overlay;
-  overlay.text(10, 10, captions.left, scale);
-  overlay.text(float(width / 2) + 10, 10, captions.right, scale);
+  overlay.text(float(scene_left) + 10, 10, captions.left, scale);
+  overlay.text(float(scene_left + (width - scene_left) / 2) + 10, 10, captions.right, scale);
   if (captions.legend_max >= 0) {
     // A vertical bar at the right edge, the top value above it and 0 below it.
     const float x1 = float(width) - 12 * scale, x0 = x1 - 8 * scale;

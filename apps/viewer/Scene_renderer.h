@@ -43,8 +43,10 @@ class Scene_renderer {
   Scene_renderer& operator=(const Scene_renderer&) = delete;
 
   void set_mesh(Pane pane, const Render_mesh& mesh);
+  // Draws the two panes side by side in the columns [scene_left, width) of the framebuffer; the
+  // columns left of them are cleared only (the window's control panel sits there).
   void draw(int width, int height, const Orbit_camera& camera, const View_options& options,
-            const Scene_captions& captions);
+            const Scene_captions& captions, int scene_left = 0);
 
  private:
   struct Gpu_mesh {
@@ -54,7 +56,7 @@ class Scene_renderer {
 
   void draw_mesh(const Gpu_mesh& mesh, const Eigen::Matrix4f& model_view,
                  const Eigen::Matrix4f& projection, const View_options& options);
-  void draw_overlay(int width, int height, const Scene_captions& captions);
+  void draw_overlay(int width, int height, int scene_left, const Scene_captions& captions);
 
   const Gl_functions& m_gl;
   GLuint m_mesh_program = 0, m_overlay_program = 0;

@@ -76,7 +76,9 @@ class Viewer {
       captions.legend_max = m_legend_max;
       captions.legend_unit = "% diag";
     }
-    m_renderer.draw(width, height, m_camera, m_view, captions);
+    // The panel is a sidebar: the panes start right of it, so it hides neither mesh.
+    const int left = int(m_panel_width * ImGui::GetIO().DisplayFramebufferScale.x);
+    m_renderer.draw(width, height, m_camera, m_view, captions, left);
   }
 
   bool busy() const { return m_simplifier.busy() || m_measurer.busy(); }
@@ -143,8 +145,11 @@ class Viewer {
   }
 
   void panel() {
-    ImGui::SetNextWindowPos(ImVec2(10, 60), ImGuiCond_FirstUseEver);
-    ImGui::Begin("simplification", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::SetNextWindowPos(ImVec2(0, 0));
+    ImGui::SetNextWindowSize(ImVec2(0, ImGui::GetIO().DisplaySize.y));
+    ImGui::Begin("simplification", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
+                     ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize);
     ImGui::PushItemWidth(180);
     ImGui::TextUnformatted(m_title.c_str());
     bool changed = false;
@@ -170,7 +175,16 @@ class Viewer {
         }
       } else {
         ImGui::InputDouble(option.name.c_str(), &value, 0, 0, "%.6g");
-        changed |= ImGui::IsItemDeactivatedAfterEdit();
+        if (ImGui::IsItemActivated()) m_value_before_edit = value;
+        if (ImGui::IsItemDeactivatedAfterEdit()) {
+          try {
+            check_policy_options(*m_policy, {{option.name, value}});
+            changed = true;
+          } catch (const std::exception& e) {  // out of range: say so, keep the old value
+            m_message = e.what();
+            value = m_value_before_edit;
+          }
+        }
       }
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", option.help.c_str());
     }
@@ -220,6 +234,7 @@ class Viewer {
       ImGui::TextColored(ImVec4(0.8f, 0.1f, 0.1f, 1), "%s", m_message.c_str());
     ImGui::TextDisabled("drag: orbit, right/shift drag: pan, wheel: zoom");
     ImGui::PopItemWidth();
+    m_panel_width = ImGui::GetWindowWidth();
     ImGui::End();
   }
 
@@ -244,6 +259,8 @@ class Viewer {
   const Policy_entry* m_policy;
   Simplify_settings m_settings;
   View_options m_view;
+  float m_panel_width = 0;         // in window coordinates, as the last frame laid it out
+  double m_value_before_edit = 0;  // of the policy option being edited
   bool m_heat_map;
   Scene_renderer m_renderer;
   Orbit_camera m_camera;

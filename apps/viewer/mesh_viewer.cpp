@@ -1,5 +1,5 @@
 // mesh_viewer MESH: the original and the simplified mesh side by side, re-simplified in real time
-// as a slider moves (DESIGN.md, "Anyone looks"; the 2014 report's preview). With --snapshot, the
+// as a slider moves (README.md, "Anyone looks"; the 2014 report's preview). With --snapshot, the
 // same picture is rendered without a window and written as a PNG.
 #include "Viewer_window.h"
 #include "common/App_error.h"
@@ -50,7 +50,7 @@ int write_snapshot_of(const Mesh& mesh, const Policy_choice& choice, double rati
   std::printf("%s: %zu -> %zu faces in %.3f s (%s); wrote %s (%dx%d)\n",
               choice.policy->name.c_str(), std::size_t(mesh.number_of_faces()),
               std::size_t(simplified.number_of_faces()), outcome.seconds,
-              outcome.stop_reason.c_str(), png.c_str(), snapshot.width, snapshot.height);
+              to_string(outcome.stop_reason), png.c_str(), snapshot.width, snapshot.height);
   return exit_success;
 }
 

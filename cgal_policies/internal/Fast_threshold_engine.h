@@ -1,13 +1,13 @@
-// The flat-array engine of the fast threshold QEM (seed 002 §2.2; policies.md §5): triangles carry
+// The flat-array engine of the fast threshold QEM ([Hu14] §2.2; docs/fast.md): triangles carry
 // the errors of their three edges, and passes k = 0, 1, ... collapse, in storage order, every edge
 // whose error lies below the rising threshold t_k = 1e-9 (k + 3)^a D^2. A triangle touched by a
 // collapse waits for the next pass. Unlike the report's method, a collapse must pass the link
 // condition, so a manifold input stays a manifold, and must not make a needle or a sliver.
 //
 // Ours too: a pass's threshold is also capped at the error of the cheapest 40% of the triangles
-// still open to a collapse. On a fine mesh t_0 already exceeds nearly every edge error (dragon.ply,
-// 871k faces: t_0 = 2.2e-6 D^2 at a = 7), so without the cap every pass collapses in storage
-// order, and the cheap edges no longer go first (twice gh's mean error at 1% instead of 1.11x).
+// still open to a collapse. On a fine mesh t_0 already exceeds nearly every edge error, so without
+// the cap every pass collapses in storage order and the cheap edges no longer go first
+// (docs/fast.md, "The level cap", has the figures).
 #ifndef CGAL_POLICIES_INTERNAL_FAST_THRESHOLD_ENGINE_H
 #define CGAL_POLICIES_INTERNAL_FAST_THRESHOLD_ENGINE_H
 
@@ -39,7 +39,7 @@ struct Fast_threshold_settings {
 
 struct Fast_threshold_vertex {
   Eigen::Vector3d point;
-  Quadric quadric;  // face planes plus border planes (policies.md §0)
+  Quadric quadric;  // face planes plus border planes (docs/quadric_core.md)
   bool border = false;
 };
 
@@ -50,14 +50,12 @@ class Fast_threshold_engine {
   // Errors below this fraction of D^2 are round-off: the lossless mode collapses only those.
   static constexpr double kLosslessTolerance = 1e-14;
   // The share of the open triangles (neither deleted nor refused since their last change) whose
-  // errors may pass in one pass: with 0.4 the mean error at 1% is 1.01x gh's on dragon_res2.ply
-  // and 1.11x on dragon.ply, for about the same work as uncapped passes.
+  // errors may pass in one pass (docs/fast.md: chosen on the dragons against gh).
   static constexpr double kPassShare = 0.4;
   // Twice the area over the squared longest edge (sqrt(3)/2 for an equilateral triangle) below
   // which a face counts as a needle or a sliver: a collapse may not make one, nor make one worse.
-  // A guard against faces too thin for a reliable normal, not a quality rule: at 1e-3, the faces
-  // around dragon.ply's hundreds of tiny holes (3 short border edges each) could not grow, and at
-  // 0.25% its mean error was 6.5x gh's (1.6x at 1e-6; the same at 1%).
+  // A guard against faces too thin for a reliable normal, not a quality rule: a larger bound keeps
+  // the faces around tiny holes (3 short border edges each) from growing (docs/fast.md).
   static constexpr double kMinimumFaceShape = 1e-6;
 
   // Precondition: every triangle has three distinct vertex indices in range.

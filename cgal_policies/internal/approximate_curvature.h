@@ -1,7 +1,7 @@
-// The approximate curvature of Zhang, Liu and Guan (2009; seed 004, eq. 9-10): the mean cosine
+// The approximate curvature of Zhang, Liu and Guan (2009; [Zhang09], eq. 9-10): the mean cosine
 // between a vertex normal and the normals of its neighbours. It is 1 on a plane and falls as the
 // surface bends; the vertex normal is the normalised sum of the unit face normals (the paper's
-// "sum of the normals of the faces around it", policies.md §1).
+// "sum of the normals of the faces around it", docs/curvature.md).
 #ifndef CGAL_POLICIES_INTERNAL_APPROXIMATE_CURVATURE_H
 #define CGAL_POLICIES_INTERNAL_APPROXIMATE_CURVATURE_H
 

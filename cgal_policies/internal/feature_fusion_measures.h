@@ -1,4 +1,4 @@
-// The local measures of the multi-feature fusion cost (Wang et al. 2013, seed 000; policies.md §2):
+// The local measures of the multi-feature fusion cost (Wang et al. 2013, [Wang13]; docs/fusion.md):
 // the side ratio zeta of an edge (the paper's eq. 9), the angle between vertex normals and the
 // normal twist along an edge (our reconstruction of the missing eqs. 4-8), and their means over the
 // neighbours of a vertex.

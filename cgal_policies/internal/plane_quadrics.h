@@ -1,4 +1,4 @@
-// Plane quadrics of faces and border edges, and their sums per vertex (policies.md §0).
+// Plane quadrics of faces and border edges, and their sums per vertex (docs/quadric_core.md).
 #ifndef CGAL_POLICIES_INTERNAL_PLANE_QUADRICS_H
 #define CGAL_POLICIES_INTERNAL_PLANE_QUADRICS_H
 

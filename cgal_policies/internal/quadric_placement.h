@@ -1,5 +1,6 @@
-// The placement chain of the QEM tutorial (seed 001; policies.md §0): the quadric's minimiser when
-// it is well defined, else the best point of the edge, else the best of its ends and midpoint.
+// The placement chain of the QEM tutorial ([QEM-tutorial]; docs/quadric_core.md): the quadric's
+// minimiser when it is well defined, else the best point of the edge, else the best of its ends and
+// midpoint.
 #ifndef CGAL_POLICIES_INTERNAL_QUADRIC_PLACEMENT_H
 #define CGAL_POLICIES_INTERNAL_QUADRIC_PLACEMENT_H
 

@@ -1,0 +1,21 @@
+// Feature_fusion_options: the settings of Feature_fusion_policies (docs/fusion.md), on top of the
+// shared quadric settings.
+//
+//   mu             weight of the normal variation, per radian, >= 0 (default 2)
+//   visual_weight  w_v, weight of the visual term, >= 0 (default 0: off; docs/fusion.md says how
+//                  both defaults were chosen)
+#ifndef CGAL_POLICIES_FEATURE_FUSION_OPTIONS_H
+#define CGAL_POLICIES_FEATURE_FUSION_OPTIONS_H
+
+#include <cgal_policies/Quadric_options.h>
+
+namespace cgal_policies {
+
+struct Feature_fusion_options : Quadric_options {
+  double mu = 2.0;
+  double visual_weight = 0.0;
+};
+
+}  // namespace cgal_policies
+
+#endif  // CGAL_POLICIES_FEATURE_FUSION_OPTIONS_H
