@@ -13,9 +13,12 @@
 #define CGAL_POLICIES_INTERNAL_HAUSDORFF_TRACKER_H
 
 #include <cgal_policies/Hausdorff_bounded_options.h>
+#include <cgal_policies/internal/Flat_frame.h>
 #include <cgal_policies/internal/Optional.h>
 #include <cgal_policies/internal/mesh_geometry.h>
 #include <cgal_policies/internal/patch_distance.h>
+#include <cgal_policies/internal/piece_cover.h>
+#include <cgal_policies/internal/triangle_distance.h>
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
