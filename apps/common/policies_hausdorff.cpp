@@ -1,9 +1,9 @@
-// The Hausdorff-bounded policy (policies.md §3): cgal_policies::Hausdorff_bounded_placement with
-// its cost and filter.
+// The Hausdorff-bounded policy (docs/hausdorff.md): cgal_policies::Hausdorff_bounded_policies, its
+// cost, placement and filter.
 #include "edge_collapse_runner.h"
 #include "policy_entries.h"
 
-#include <cgal_policies/Hausdorff_bounded_placement.h>
+#include <cgal_policies/Hausdorff_bounded_policies.h>
 
 #include <algorithm>
 
@@ -26,7 +26,7 @@ Simplify_outcome run_hausdorff(Mesh& mesh, const Simplify_settings& settings) {
   Simplify_settings own = settings;
   if (own.max_error > 0) options.beta = std::min(options.beta, own.max_error);
   own.max_error = 0;
-  const cgal_policies::Hausdorff_bounded_placement<Mesh, Kernel> hausdorff(mesh, options);
+  const cgal_policies::Hausdorff_bounded_policies<Mesh, Kernel> hausdorff(mesh, options);
   return run_edge_collapse(mesh, own, hausdorff.get_cost(), hausdorff.get_placement(),
                            hausdorff.get_filter());
 }
@@ -36,7 +36,7 @@ Simplify_outcome run_hausdorff(Mesh& mesh, const Simplify_settings& settings) {
 std::vector<Policy_entry> hausdorff_policies() {
   return {
       {"hausdorff",
-       "cgal_policies Hausdorff_bounded_placement (Liu et al. 2017: K+1 candidates per edge, "
+       "cgal_policies Hausdorff_bounded_policies (Liu et al. 2017: K+1 candidates per edge, "
        "refused above the tolerance; global mode bounds the two-sided distance to the input)",
        {{"tolerance", 0.005, "two-sided Hausdorff bound alpha*beta, a fraction of D"},
         {"steps", 10, "K: candidates at K+1 points along the edge, plus the quadric optimum"},
