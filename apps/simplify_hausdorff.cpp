@@ -10,7 +10,7 @@
 #include "common/edge_collapse_runner.h"
 #include "common/mesh_io.h"
 
-#include <cgal_policies/Hausdorff_bounded_placement.h>
+#include <cgal_policies/Hausdorff_bounded_policies.h>
 
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 
@@ -43,7 +43,7 @@ int run(int argc, char** argv) {
 
   cgal_policies::Hausdorff_bounded_options options;
   options.beta = beta;
-  const cgal_policies::Hausdorff_bounded_placement<Mesh, Kernel> hausdorff(mesh, options);
+  const cgal_policies::Hausdorff_bounded_policies<Mesh, Kernel> hausdorff(mesh, options);
   SMS::edge_collapse(mesh, Face_count_stop_predicate(mesh, target),
                      CGAL::parameters::get_cost(hausdorff.get_cost())
                          .get_placement(hausdorff.get_placement())

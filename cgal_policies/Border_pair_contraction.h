@@ -59,12 +59,16 @@ class Border_pair_contraction {
 
   template <typename TriangleMesh>
   Border_pair_contraction_report operator()(TriangleMesh& tm) const {
+    return (*this)(tm, get(CGAL::vertex_point, tm));
+  }
+
+  // The same, with the points read from and written to `vpm`.
+  template <typename TriangleMesh, typename VertexPointMap>
+  Border_pair_contraction_report operator()(TriangleMesh& tm, const VertexPointMap& vpm) const {
     using Graph_traits = boost::graph_traits<TriangleMesh>;
     using Vertex = typename Graph_traits::vertex_descriptor;
     using Halfedge = typename Graph_traits::halfedge_descriptor;
-    using Point = typename boost::property_traits<
-        typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type>::value_type;
-    const auto vpm = get(CGAL::vertex_point, tm);
+    using Point = typename boost::property_traits<VertexPointMap>::value_type;
     Border_pair_contraction_report report;
 
     // Border vertices, numbered in mesh order, with their loop and outgoing border halfedge.

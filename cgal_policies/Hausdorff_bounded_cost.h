@@ -1,30 +1,33 @@
-// Hausdorff_bounded_cost: the priority of an edge for Hausdorff_bounded_placement (policies.md §3),
-// and the keeper of its state while CGAL collapses edges.
+// Hausdorff_bounded_cost: the priority of an edge for Hausdorff_bounded_policies ([Liu17] §2.3;
+// docs/hausdorff.md), and the hook where a collapse the filter chose is applied.
 //
 // - Collapse_order::by_cost: the quadric error of the edge (Classic_quadric_policies), cheap
 //   enough to refresh for every edge a collapse touches; the two-sided distance itself is measured
 //   by Hausdorff_bounded_filter when the edge is popped.
-// - Collapse_order::storage: the edge's place in storage order, once (the paper's single pass).
-// - After a collapse it moves the kept vertex to the point the filter chose and attaches the input
-//   pieces of the old patch to the new faces.
+// - Collapse_order::storage: the edge's place in storage order, once ([Liu17]'s single pass).
+// - update_after_collapse() moves the kept vertex to the point the filter chose and attaches the
+//   old patch's input pieces to the new faces (why there: Hausdorff_bounded_policies.h).
 //
-// Models CGAL's `GetCost` concept with `Update_tag`. Built by Hausdorff_bounded_placement, which
-// shares its state with it; use it only through get_cost().
+// Models CGAL's `GetCost` concept with `Update_tag`.
 //
-// Usage:
-//   cgal_policies::Hausdorff_bounded_placement<Mesh, Kernel> hausdorff(mesh);
-//   SMS::edge_collapse(mesh, stop, CGAL::parameters::get_cost(hausdorff.get_cost()) ...);
+// Parameters:
+//   state     the shared state (not null), owned by Hausdorff_bounded_policies
+//   quadrics  the quadric state, shared with the placement
+//   order     Collapse_order::by_cost or Collapse_order::storage
+//
+// Usage: built by Hausdorff_bounded_policies, used through its get_cost():
+//   cgal_policies::Hausdorff_bounded_policies<Mesh, Kernel> policies(mesh);
+//   SMS::edge_collapse(mesh, stop, CGAL::parameters::get_cost(policies.get_cost()) /* ... */);
 #ifndef CGAL_POLICIES_HAUSDORFF_BOUNDED_COST_H
 #define CGAL_POLICIES_HAUSDORFF_BOUNDED_COST_H
 
 #include <cgal_policies/Classic_quadric_policies.h>
 #include <cgal_policies/Hausdorff_bounded_options.h>
-#include <cgal_policies/internal/Hausdorff_tracker.h>
+#include <cgal_policies/internal/Hausdorff_bounded_state.h>
 #include <cgal_policies/internal/Optional.h>
 
+#include <CGAL/assertions.h>
 #include <CGAL/tags.h>
-
-#include <memory>
 
 namespace cgal_policies {
 
@@ -32,23 +35,24 @@ template <typename TriangleMesh, typename GeomTraits>
 class Hausdorff_bounded_cost {
  public:
   using Update_tag = CGAL::Tag_true;
-  using Tracker = internal::Hausdorff_tracker<TriangleMesh>;
+  using Shared_state = internal::Hausdorff_bounded_state<TriangleMesh>;
   using Quadrics = Classic_quadric_policies<TriangleMesh, GeomTraits>;
 
-  Hausdorff_bounded_cost(std::shared_ptr<Tracker> tracker, const Quadrics& quadrics,
-                         Collapse_order order)
-      : m_tracker(std::move(tracker)), m_quadrics(quadrics), m_order(order) {}
+  Hausdorff_bounded_cost(Shared_state* state, const Quadrics& quadrics, Collapse_order order)
+      : m_state(state), m_quadrics(quadrics), m_order(order) {
+    CGAL_precondition(state != nullptr);
+  }
 
   template <typename VertexPointMap>
   void initialize(const TriangleMesh& tm, const VertexPointMap& vpm,
                   const GeomTraits& traits) const {
     m_quadrics.initialize(tm, vpm, traits);
-    m_tracker->attach_to_itself(tm, vpm);
+    m_state->attach_to_itself(tm, vpm);
   }
 
   template <typename Profile, typename VertexDescriptor>
   void update_after_collapse(const Profile& profile, VertexDescriptor kept) const {
-    m_tracker->commit(profile.vertex_point_map(), kept, true);
+    m_state->commit_collapse(profile.vertex_point_map(), kept);
     m_quadrics.update_after_collapse(profile, kept);
   }
 
@@ -57,13 +61,13 @@ class Hausdorff_bounded_cost {
       const Profile& profile, const internal::Optional<typename Profile::Point>& placement) const {
     if (!placement) return {};
     if (m_order == Collapse_order::by_cost) return m_quadrics(profile, placement);
-    const internal::Optional<double> order = m_tracker->storage_order(profile);
+    const internal::Optional<double> order = m_state->scan_order().position(profile);
     if (!order) return {};
     return typename Profile::FT(*order);
   }
 
  private:
-  std::shared_ptr<Tracker> m_tracker;
+  Shared_state* m_state;
   Quadrics m_quadrics;
   Collapse_order m_order;
 };

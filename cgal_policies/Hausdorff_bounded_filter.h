@@ -1,21 +1,24 @@
-// Hausdorff_bounded_filter: refuses a collapse unless some placement keeps the two-sided Hausdorff
-// distance within the tolerance tau = alpha * beta * D (policies.md §3; Liu et al. 2017, seed 003,
-// §2.3: lambda = psi(M0) * beta, accept when the best distance <= lambda * alpha).
+// Hausdorff_bounded_filter: refuses a collapse unless it keeps the two-sided Hausdorff distance
+// between the output and the input within a tolerance tau ([Liu17] §2.3: accept when the best
+// distance <= lambda * alpha, lambda = psi(M0) * beta; docs/hausdorff.md).
 //
-// When an edge is popped it probes the K + 1 points at a constant step along the edge and the
-// placement it was given (the quadric optimum), subject to the border rule and the flip check
-// (Bounded_normal_angle_filter), and keeps the one with the smallest lower bound of its two-sided
-// patch distance that passes the conservative test (refined sample grids plus their covering
-// radius one way, input pieces covered by single faces the other way). The chosen point reaches
-// the mesh through Hausdorff_bounded_cost::update_after_collapse.
+// Within Hausdorff_bounded_policies it probes the K + 1 points at a constant step along the edge
+// and the placement it is given, subject to the border rule and the flip check
+// (Bounded_normal_angle_filter), and returns the one with the smallest lower bound of its
+// two-sided patch distance that passes the conservative test. The collapse reaches that point
+// through Hausdorff_bounded_cost::update_after_collapse (Hausdorff_bounded_policies.h explains).
 //
-// It can also run alone, around any cost and placement, to certify only the placement it is given
-// (an error bound for any policy): then nothing else is needed.
+// Alone, around any cost and placement, it certifies only the placement it is given against the
+// mesh as it was when the filter was built (an error bound for any policy).
 //
 // Models CGAL's `Filter` concept and decorates a base filter, which runs first. It must be the
-// outermost filter: what it accepts is collapsed at once, and it relies on that.
+// outermost filter: what it accepts is taken as collapsed.
 //
-// Parameters: see Hausdorff_bounded_options (tolerance as a fraction of the input's diagonal D).
+// Parameters (alone):
+//   tm           the mesh to simplify, also the reference (as it is now)
+//   tolerance    tau as a fraction of the diagonal D of tm's bounding box, > 0
+//   base_filter  runs first (default: accepts everything)
+//   vpm          tm's vertex point map (default: get(CGAL::vertex_point, tm))
 //
 // Usage (alone, bounding any policy to 0.5% of D):
 //   cgal_policies::Hausdorff_bounded_filter<Mesh, Kernel> bound(mesh, 0.005);
@@ -25,13 +28,15 @@
 
 #include <cgal_policies/Bounded_normal_angle_filter.h>
 #include <cgal_policies/Hausdorff_bounded_options.h>
-#include <cgal_policies/internal/Hausdorff_tracker.h>
+#include <cgal_policies/internal/Hausdorff_bounded_state.h>
 #include <cgal_policies/internal/Optional.h>
 #include <cgal_policies/internal/hausdorff_candidates.h>
 
 #include <CGAL/Surface_mesh_simplification/internal/Common.h>
+#include <CGAL/assertions.h>
 
 #include <memory>
+#include <vector>
 
 namespace cgal_policies {
 
@@ -39,27 +44,35 @@ template <typename TriangleMesh, typename GeomTraits,
           typename BaseFilter = CGAL::Surface_mesh_simplification::internal::Dummy_filter>
 class Hausdorff_bounded_filter {
  public:
-  using Tracker = internal::Hausdorff_tracker<TriangleMesh>;
+  using Shared_state = internal::Hausdorff_bounded_state<TriangleMesh>;
 
-  // Probes candidates for Hausdorff_bounded_placement, with which it shares `tracker`.
-  Hausdorff_bounded_filter(std::shared_ptr<Tracker> tracker,
-                           const Hausdorff_bounded_options& options,
+  // Within Hausdorff_bounded_policies, which owns `state`.
+  Hausdorff_bounded_filter(Shared_state* state, const Hausdorff_bounded_options& options,
                            const BaseFilter& base_filter = BaseFilter())
-      : m_tracker(std::move(tracker)),
+      : m_state(state),
         m_options(options),
         m_search(true),
         m_flip(options.max_normal_angle_deg),
-        m_base_filter(base_filter) {}
+        m_base_filter(base_filter) {
+    CGAL_precondition(state != nullptr);
+  }
 
-  // Alone: certifies the placement it is given against `tm` as it is now, within
-  // tolerance * D of it (a fraction of its bounding-box diagonal).
+  // Alone.
   Hausdorff_bounded_filter(TriangleMesh& tm, double tolerance,
                            const BaseFilter& base_filter = BaseFilter())
-      : m_tracker(std::make_shared<Tracker>(tm, tm, tolerance, Hausdorff_bounded_options())),
+      : Hausdorff_bounded_filter(tm, tolerance, base_filter, get(CGAL::vertex_point, tm)) {}
+
+  template <typename VertexPointMap>
+  Hausdorff_bounded_filter(TriangleMesh& tm, double tolerance, const BaseFilter& base_filter,
+                           const VertexPointMap& vpm)
+      : m_owned_state(
+            std::make_shared<Shared_state>(tm, vpm, tm, tolerance, Hausdorff_bounded_options())),
+        m_state(m_owned_state.get()),
         m_search(false),
         m_base_filter(base_filter) {
-    m_tracker->attach_to_itself(tm, get(CGAL::vertex_point, tm));
-    m_tracker->defer_commits();
+    CGAL_precondition(tolerance > 0);
+    m_state->attach_to_itself(tm, vpm);
+    m_state->defer_commits();
   }
 
   template <typename Profile>
@@ -68,7 +81,7 @@ class Hausdorff_bounded_filter {
     using Point = typename Profile::Point;
     placement = m_base_filter(profile, placement);
     if (!placement) return placement;
-    if (m_options.order == Collapse_order::storage) m_tracker->mark_tried(profile);
+    if (m_options.order == Collapse_order::storage) m_state->scan_order().mark_tried(profile);
     const Eigen::Vector3d preferred = internal::to_eigen(*placement);
     std::vector<Eigen::Vector3d> candidates{preferred};
     if (m_search)
@@ -79,13 +92,14 @@ class Hausdorff_bounded_filter {
              bool(m_flip(profile, internal::Optional<Point>(internal::to_point<Point>(p))));
     };
     const internal::Optional<Eigen::Vector3d> chosen =
-        m_tracker->choose(profile, candidates, acceptable);
+        m_state->choose(profile, candidates, acceptable);
     if (!chosen) return {};
     return internal::to_point<Point>(*chosen);
   }
 
  private:
-  std::shared_ptr<Tracker> m_tracker;
+  std::shared_ptr<Shared_state> m_owned_state;  // alone only
+  Shared_state* m_state;
   Hausdorff_bounded_options m_options;
   bool m_search;
   Bounded_normal_angle_filter<> m_flip;

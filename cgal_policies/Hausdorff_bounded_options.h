@@ -1,5 +1,6 @@
-// The parameters of Hausdorff_bounded_placement and its cost and filter (policies.md §3, after Liu
-// et al. 2017, seed 003: tolerance factor beta, simplification coefficient alpha).
+// The parameters of Hausdorff_bounded_policies and its cost, placement and filter ([Liu17] §2.3:
+// tolerance factor beta, simplification coefficient alpha; docs/hausdorff.md). Ranges and defaults
+// are listed in Hausdorff_bounded_policies.h.
 #ifndef CGAL_POLICIES_HAUSDORFF_BOUNDED_OPTIONS_H
 #define CGAL_POLICIES_HAUSDORFF_BOUNDED_OPTIONS_H
 
@@ -8,13 +9,13 @@ namespace cgal_policies {
 // What a candidate patch is measured against.
 enum class Hausdorff_reference {
   global,  // the original surface: the output stays within the tolerance of the input
-  local    // the paper's literal rule: the current patch, so errors may accumulate
+  local    // [Liu17]'s literal rule: the current patch, so errors may accumulate
 };
 
 // In which order edges are tried.
 enum class Collapse_order {
   by_cost,  // CGAL's priority queue, keyed by the quadric error of the edge
-  storage   // the paper's single pass over the edges in storage order
+  storage   // [Liu17]'s single pass over the edges in storage order
 };
 
 // What border vertices may do.
@@ -25,12 +26,12 @@ enum class Border_rule {
 
 struct Hausdorff_bounded_options {
   double beta = 0.005;  // tolerance factor, a fraction of the input's bounding-box diagonal D
-  double alpha = 1.0;   // simplification coefficient in [0, 1]: tau = alpha * beta * D
+  double alpha = 1.0;   // simplification coefficient in (0, 1]: tau = alpha * beta * D
   int steps = 10;       // K: the edge is probed at K + 1 points at a constant step
   Hausdorff_reference reference = Hausdorff_reference::global;
   Collapse_order order = Collapse_order::by_cost;
   Border_rule border = Border_rule::slide;
-  double max_normal_angle_deg = 90;  // flip prevention (policies.md §0)
+  double max_normal_angle_deg = 90;  // flip prevention (Bounded_normal_angle_filter)
   double border_weight = 1000;       // border planes of the quadric that orders the queue
   int max_refinement = 5;            // sample grids are refined up to 2^5 steps per edge
 };

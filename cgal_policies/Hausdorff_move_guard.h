@@ -1,15 +1,20 @@
 // Hausdorff_move_guard: a predicate for Laplacian_smoother that refuses any vertex move that would
-// break a two-sided Hausdorff bound between a mesh and the original it approximates (policies.md
-// §3, bounded smoothing).
+// break a two-sided Hausdorff bound between a mesh and the original it approximates ([Liu17] §2.4,
+// bounded; docs/hausdorff.md).
 //
-// The original's triangles go into an AABB tree, and each one is attached, split if need be, to a
-// face of the current mesh that covers it within the tolerance. A move is made only when the
-// vertex's new star is certified within the tolerance of the original (refined sample grids plus
-// their covering radius) and every piece attached to the star is still covered by one of its
-// faces. Where the given mesh already breaks the bound, the faces concerned are frozen.
+// The original's triangles are attached, split if need be, to faces of the current mesh that
+// cover them within the tolerance. A move is made only when the vertex's new star is certified
+// within the tolerance of the original and every piece attached to the star is still covered by
+// one of its faces. Where the given mesh already breaks the bound, the faces concerned are frozen.
+//
+// Models the `allow_move(v, point)` predicate of Laplacian_smoother::smooth().
 //
 // Parameters:
-//   tolerance  the bound, a fraction of the original's bounding-box diagonal D
+//   original      the reference surface
+//   current       the mesh to smooth; it must outlive the guard and change only by allowed moves
+//   tolerance     the bound as a fraction of the original's bounding-box diagonal D, > 0
+//   original_vpm  original's vertex point map (default: get(CGAL::vertex_point, original))
+//   current_vpm   current's vertex point map (default: get(CGAL::vertex_point, current))
 //
 // Usage:
 //   cgal_policies::Hausdorff_move_guard<Mesh> guard(original, simplified, 0.005);
@@ -18,36 +23,48 @@
 #define CGAL_POLICIES_HAUSDORFF_MOVE_GUARD_H
 
 #include <cgal_policies/Hausdorff_bounded_options.h>
-#include <cgal_policies/internal/Hausdorff_tracker.h>
+#include <cgal_policies/internal/Hausdorff_bounded_state.h>
 #include <cgal_policies/internal/mesh_geometry.h>
+
+#include <CGAL/assertions.h>
+#include <CGAL/boost/graph/properties.h>
 
 #include <memory>
 
 namespace cgal_policies {
 
-template <typename TriangleMesh>
+template <typename TriangleMesh,
+          typename VertexPointMap =
+              typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type>
 class Hausdorff_move_guard {
-  using Tracker = internal::Hausdorff_tracker<TriangleMesh>;
+  using Shared_state = internal::Hausdorff_bounded_state<TriangleMesh>;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
 
  public:
-  // `current` must stay alive, and change only through moves this guard allowed.
   Hausdorff_move_guard(const TriangleMesh& original, TriangleMesh& current, double tolerance)
-      : m_tracker(
-            std::make_shared<Tracker>(original, current, tolerance, Hausdorff_bounded_options())),
-        m_current(&current) {
-    m_tracker->attach_to_approximation(current, get(CGAL::vertex_point, current));
+      : Hausdorff_move_guard(original, current, tolerance, get(CGAL::vertex_point, original),
+                             get(CGAL::vertex_point, current)) {}
+
+  template <typename OriginalPointMap>
+  Hausdorff_move_guard(const TriangleMesh& original, TriangleMesh& current, double tolerance,
+                       const OriginalPointMap& original_vpm, const VertexPointMap& current_vpm)
+      : m_state(std::make_shared<Shared_state>(original, original_vpm, current, tolerance,
+                                               Hausdorff_bounded_options())),
+        m_current(&current),
+        m_vpm(current_vpm) {
+    CGAL_precondition(tolerance > 0);
+    m_state->attach_to_approximation(current, m_vpm);
   }
 
   template <typename Point>
   bool operator()(vertex_descriptor v, const Point& p) const {
-    return m_tracker->try_move(*m_current, get(CGAL::vertex_point, *m_current), v,
-                               internal::to_eigen(p));
+    return m_state->try_move(*m_current, m_vpm, v, internal::to_eigen(p));
   }
 
  private:
-  std::shared_ptr<Tracker> m_tracker;
+  std::shared_ptr<Shared_state> m_state;
   TriangleMesh* m_current;
+  VertexPointMap m_vpm;
 };
 
 }  // namespace cgal_policies

@@ -1,5 +1,5 @@
-// Laplacian_smoother: Laplacian smoothing as a post-process of simplification (Liu et al. 2017,
-// [Liu17], §2.4, eq. 8-9; docs/hausdorff.md).
+// Laplacian_smoother: Laplacian smoothing as a post-process of simplification ([Liu17] §2.4,
+// eq. 8-9; docs/hausdorff.md).
 //
 // Each pass moves every interior vertex at once towards the weighted mean U of its neighbours,
 // P <- P + lambda (U - P), with uniform weights or w_i = 1 / |P - p_i| (eq. 8). Border vertices
@@ -10,22 +10,27 @@
 // refuses a move that would break a two-sided distance bound); moves are then made one vertex at a
 // time, in vertex order, towards the targets computed from the positions before the pass.
 //
+// Points are read and written through a vertex point map (default: the mesh's own).
+//
 // Parameters:
-//   rate     lambda in [0, 1] (default 0.5)
-//   weights  Smoothing_weights::uniform (default) or Smoothing_weights::inverse_distance
-//   method   Smoothing_method::laplacian (default) or Smoothing_method::taubin
-//   mu       Taubin's inflating factor (default -0.53)
+//   rate        lambda in [0, 1] (default 0.5)
+//   weights     Smoothing_weights::uniform (default) or Smoothing_weights::inverse_distance
+//   method      Smoothing_method::laplacian (default) or Smoothing_method::taubin
+//   mu          Taubin's inflating factor, negative (default -0.53)
+//   iterations  passes of smooth(), >= 0
 //
 // Usage:
-//   cgal_policies::Laplacian_smoother<Mesh> smoother(0.5,
-//   cgal_policies::Smoothing_weights::uniform,
-//                                                    cgal_policies::Smoothing_method::taubin);
+//   using cgal_policies::Smoothing_method;
+//   using cgal_policies::Smoothing_weights;
+//   cgal_policies::Laplacian_smoother<Mesh> smoother(0.5, Smoothing_weights::uniform,
+//                                                    Smoothing_method::taubin);
 //   smoother.smooth(mesh, 10);
 #ifndef CGAL_POLICIES_LAPLACIAN_SMOOTHER_H
 #define CGAL_POLICIES_LAPLACIAN_SMOOTHER_H
 
 #include <cgal_policies/internal/mesh_geometry.h>
 
+#include <CGAL/assertions.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
@@ -48,16 +53,26 @@ class Laplacian_smoother {
                               Smoothing_weights weights = Smoothing_weights::uniform,
                               Smoothing_method method = Smoothing_method::laplacian,
                               double mu = -0.53)
-      : m_rate(rate), m_weights(weights), m_method(method), m_mu(mu) {}
+      : m_rate(rate), m_weights(weights), m_method(method), m_mu(mu) {
+    CGAL_precondition(rate >= 0 && rate <= 1);
+  }
 
   // Runs `iterations` passes (lambda then mu for Taubin) and returns how many moves allow_move
   // refused.
   template <typename AllowMove>
   std::size_t smooth(TriangleMesh& tm, int iterations, const AllowMove& allow_move) const {
+    return smooth(tm, iterations, allow_move, get(CGAL::vertex_point, tm));
+  }
+
+  // The same, with the points read from and written to `vpm`.
+  template <typename AllowMove, typename VertexPointMap>
+  std::size_t smooth(TriangleMesh& tm, int iterations, const AllowMove& allow_move,
+                     const VertexPointMap& vpm) const {
+    CGAL_precondition(iterations >= 0);
     std::size_t refused = 0;
     for (int i = 0; i < iterations; ++i) {
-      refused += pass(tm, m_rate, allow_move);
-      if (m_method == Smoothing_method::taubin) refused += pass(tm, m_mu, allow_move);
+      refused += pass(tm, vpm, m_rate, allow_move);
+      if (m_method == Smoothing_method::taubin) refused += pass(tm, vpm, m_mu, allow_move);
     }
     return refused;
   }
@@ -67,10 +82,10 @@ class Laplacian_smoother {
   }
 
  private:
-  template <typename AllowMove>
-  std::size_t pass(TriangleMesh& tm, double factor, const AllowMove& allow_move) const {
-    const auto vpm = get(CGAL::vertex_point, tm);
-    using Point = typename boost::property_traits<decltype(vpm)>::value_type;
+  template <typename VertexPointMap, typename AllowMove>
+  std::size_t pass(TriangleMesh& tm, const VertexPointMap& vpm, double factor,
+                   const AllowMove& allow_move) const {
+    using Point = typename boost::property_traits<VertexPointMap>::value_type;
     std::vector<std::pair<vertex_descriptor, Eigen::Vector3d>> targets;
     for (vertex_descriptor v : vertices(tm)) {
       if (halfedge(v, tm) == boost::graph_traits<TriangleMesh>::null_halfedge() ||

@@ -1,14 +1,16 @@
-// Hausdorff_bounded_placement, its cost and filter (policies.md §3): exact cases on tiny meshes,
-// and the global-mode guarantee on real meshes, checked by mesh_error's measure.
+// Hausdorff_bounded_policies, its cost, placement and filter (docs/hausdorff.md): exact cases on
+// tiny meshes, and the global-mode guarantee on real meshes, checked by mesh_error's measure.
 #include "common/edge_collapse_runner.h"
 #include "common/mesh_measures.h"
 #include "test_meshes.h"
 
 #include "common/mesh_io.h"
 
-#include <cgal_policies/Hausdorff_bounded_placement.h>
+#include <cgal_policies/Hausdorff_bounded_policies.h>
 #include <cgal_policies/Hausdorff_move_guard.h>
 #include <cgal_policies/Laplacian_smoother.h>
+#include <cgal_policies/internal/piece_cover.h>
+#include <cgal_policies/internal/triangle_distance.h>
 
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Edge_profile.h>
 
@@ -23,7 +25,7 @@ namespace SMS = CGAL::Surface_mesh_simplification;
 using apps::Kernel;
 using apps::Mesh;
 using apps::Point;
-using Placement = cgal_policies::Hausdorff_bounded_placement<Mesh, Kernel>;
+using Policies = cgal_policies::Hausdorff_bounded_policies<Mesh, Kernel>;
 using Profile = SMS::Edge_profile<Mesh>;
 
 cgal_policies::Hausdorff_bounded_options options_with(double beta) {
@@ -33,14 +35,14 @@ cgal_policies::Hausdorff_bounded_options options_with(double beta) {
 }
 
 // Asks the policy's filter, as edge_collapse would when it pops the edge of h.
-bool collapse_accepted(Mesh& mesh, const Placement& policy, Mesh::Halfedge_index h) {
+bool collapse_accepted(Mesh& mesh, const Policies& policy, Mesh::Halfedge_index h) {
   const Kernel traits;
   const Profile profile(h, mesh, traits, get(CGAL::vertex_index, mesh),
                         get(CGAL::vertex_point, mesh), get(CGAL::halfedge_index, mesh), true);
   return bool(policy.get_filter()(profile, policy.get_placement()(profile)));
 }
 
-void start(Mesh& mesh, const Placement& policy) {
+void start(Mesh& mesh, const Policies& policy) {
   policy.get_cost().initialize(mesh, get(CGAL::vertex_point, mesh), Kernel());
 }
 
@@ -64,7 +66,7 @@ Mesh ridge_grid(double height) {
 void expect_every_interior_collapse_accepted(double beta) {
   {
     Mesh mesh = test_meshes::flat_grid(4);
-    const Placement policy(mesh, options_with(beta));
+    const Policies policy(mesh, options_with(beta));
     start(mesh, policy);
     int interior = 0;
     for (auto e : edges(mesh)) {
@@ -78,13 +80,13 @@ void expect_every_interior_collapse_accepted(double beta) {
   }
 }
 
-TEST(HausdorffBoundedPlacement, FlatGridAcceptsEveryInteriorCollapse) {
+TEST(HausdorffBoundedPolicies, FlatGridAcceptsEveryInteriorCollapse) {
   expect_every_interior_collapse_accepted(0.5);
 }
 
 // The same policy is asked about every edge with no collapse in between: an accepted choice that
 // was not collapsed must not be taken as done (two edges were refused here while it was).
-TEST(HausdorffBoundedPlacement, FlatGridAcceptsEveryInteriorCollapseAtSmallTolerances) {
+TEST(HausdorffBoundedPolicies, FlatGridAcceptsEveryInteriorCollapseAtSmallTolerances) {
   for (double beta : {0.0001, 0.001, 0.01, 0.05, 0.1})
     expect_every_interior_collapse_accepted(beta);
 }
@@ -93,7 +95,7 @@ TEST(HausdorffBoundedPlacement, FlatGridAcceptsEveryInteriorCollapseAtSmallToler
 // [0, 2]^2. A piece inside it that straddles all four is cut into parts that tile it exactly, each
 // over its own triangle; halving alone cannot cover it within 1e-9. A piece that reaches out of the
 // square is refused, and so is one seen from below (the fan faces away from it).
-TEST(HausdorffBoundedPlacement, APieceIsCutExactlyAlongACoplanarFan) {
+TEST(HausdorffBoundedPolicies, APieceIsCutExactlyAlongACoplanarFan) {
   using cgal_policies::internal::Piece_cover;
   using cgal_policies::internal::Triangle_corners;
   using V = Eigen::Vector3d;
@@ -129,28 +131,28 @@ TEST(HausdorffBoundedPlacement, APieceIsCutExactlyAlongACoplanarFan) {
   EXPECT_TRUE(covers.empty());
 }
 
-TEST(HausdorffBoundedPlacement, BentGridRefusesTheCollapseAcrossTheBendBelowItsHeight) {
+TEST(HausdorffBoundedPolicies, BentGridRefusesTheCollapseAcrossTheBendBelowItsHeight) {
   // The interior edge from (1, 2) up to the ridge vertex (2, 2): whichever point the merged vertex
   // takes, the bend is cut or the flat part is lifted by a good part of the height.
   const double height = 0.5;
   for (const double tolerance : {0.1 * height, 2 * height}) {
     Mesh mesh = ridge_grid(height);
     const double diagonal = apps::bbox_diagonal(mesh);
-    const Placement policy(mesh, options_with(tolerance / diagonal));
+    const Policies policy(mesh, options_with(tolerance / diagonal));
     start(mesh, policy);
     const bool accepted = collapse_accepted(mesh, policy, halfedge_between(mesh, 11, 12));
     EXPECT_EQ(accepted, tolerance > height) << "tolerance " << tolerance;
   }
 }
 
-TEST(HausdorffBoundedPlacement, LockedBordersRefuseBorderEdges) {
+TEST(HausdorffBoundedPolicies, LockedBordersRefuseBorderEdges) {
   Mesh mesh = test_meshes::flat_grid(4);
   cgal_policies::Hausdorff_bounded_options options = options_with(0.5);
-  const Placement sliding(mesh, options);
+  const Policies sliding(mesh, options);
   start(mesh, sliding);
   EXPECT_TRUE(collapse_accepted(mesh, sliding, halfedge_between(mesh, 1, 2)));
   options.border = cgal_policies::Border_rule::lock;
-  const Placement locked(mesh, options);
+  const Policies locked(mesh, options);
   start(mesh, locked);
   EXPECT_FALSE(collapse_accepted(mesh, locked, halfedge_between(mesh, 1, 2)));
 }
@@ -177,7 +179,7 @@ apps::Mesh_error simplify_band(cgal_policies::Hausdorff_reference reference, dou
   const Mesh original = mesh;
   cgal_policies::Hausdorff_bounded_options options = options_with(beta);
   options.reference = reference;
-  const Placement policy(mesh, options);
+  const Policies policy(mesh, options);
   apps::Simplify_settings settings;
   settings.target_faces = 2;
   apps::run_edge_collapse(mesh, settings, policy.get_cost(), policy.get_placement(),
@@ -186,7 +188,7 @@ apps::Mesh_error simplify_band(cgal_policies::Hausdorff_reference reference, dou
   return apps::measure_mesh_error(original, mesh, 20000);
 }
 
-TEST(HausdorffBoundedPlacement, LocalModeAccumulatesWhileGlobalModeKeepsTheBound) {
+TEST(HausdorffBoundedPolicies, LocalModeAccumulatesWhileGlobalModeKeepsTheBound) {
   const double beta = 0.01;
   const apps::Mesh_error local = simplify_band(cgal_policies::Hausdorff_reference::local, beta);
   const apps::Mesh_error global = simplify_band(cgal_policies::Hausdorff_reference::global, beta);
@@ -197,7 +199,7 @@ TEST(HausdorffBoundedPlacement, LocalModeAccumulatesWhileGlobalModeKeepsTheBound
 // The guarantee: in global mode, mesh_error's two-sided Hausdorff distance never exceeds the
 // tolerance, smoothing off and bounded smoothing on. (The registry's "hausdorff" entry runs the
 // same classes; property_test checks it like every policy.)
-TEST(HausdorffBoundedPlacement, GlobalModeKeepsTheTwoSidedBoundOnRealMeshes) {
+TEST(HausdorffBoundedPolicies, GlobalModeKeepsTheTwoSidedBoundOnRealMeshes) {
   SKIP_IF_REAL_MESHES_ARE_OFF();
   for (const std::string name : {"bunny.obj", "fandisk.obj", "teapot.obj", "rocker-arm.obj"}) {
     const Mesh original = apps::read_triangle_mesh(test_meshes::data_file(name));
@@ -205,7 +207,7 @@ TEST(HausdorffBoundedPlacement, GlobalModeKeepsTheTwoSidedBoundOnRealMeshes) {
       for (const bool smooth : {false, true}) {
         Mesh mesh = original;
         {
-          const Placement policy(mesh, options_with(tolerance));
+          const Policies policy(mesh, options_with(tolerance));
           // Down to 5% of the faces, or as far as the tolerance allows: far enough that the
           // tighter tolerances stop the run, and short enough for a test.
           apps::Simplify_settings settings;

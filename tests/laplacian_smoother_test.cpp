@@ -1,4 +1,4 @@
-// Laplacian_smoother and Hausdorff_move_guard (policies.md §3, seed 003 §2.4).
+// Laplacian_smoother and Hausdorff_move_guard ([Liu17] §2.4; docs/hausdorff.md).
 #include "common/mesh_measures.h"
 #include "test_meshes.h"
 

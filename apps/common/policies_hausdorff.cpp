@@ -1,10 +1,10 @@
-// The Hausdorff-bounded policy (docs/hausdorff.md): cgal_policies::Hausdorff_bounded_placement
-// with its cost and filter.
+// The Hausdorff-bounded policy (docs/hausdorff.md): cgal_policies::Hausdorff_bounded_policies, its
+// cost, placement and filter.
 #include "Policy_options_table.h"
 #include "edge_collapse_runner.h"
 #include "policy_entries.h"
 
-#include <cgal_policies/Hausdorff_bounded_placement.h>
+#include <cgal_policies/Hausdorff_bounded_policies.h>
 
 #include <algorithm>
 
@@ -35,7 +35,7 @@ Simplify_outcome run_hausdorff(Mesh& mesh, const Simplify_settings& settings) {
   options.max_normal_angle_deg = settings.max_normal_angle_deg;
   // The policy keeps --max-error itself, with the tighter of the two bounds.
   if (settings.max_error > 0) options.beta = std::min(options.beta, settings.max_error);
-  const cgal_policies::Hausdorff_bounded_placement<Mesh, Kernel> hausdorff(mesh, options);
+  const cgal_policies::Hausdorff_bounded_policies<Mesh, Kernel> hausdorff(mesh, options);
   return run_edge_collapse(mesh, settings, hausdorff.get_cost(), hausdorff.get_placement(),
                            hausdorff.get_filter(), Error_bound_keeper::policy);
 }
@@ -45,7 +45,7 @@ Simplify_outcome run_hausdorff(Mesh& mesh, const Simplify_settings& settings) {
 std::vector<Policy_entry> hausdorff_policies() {
   Policy_entry hausdorff{
       "hausdorff",
-      "cgal_policies Hausdorff_bounded_placement (Liu et al. 2017: K+1 candidates per edge, "
+      "cgal_policies Hausdorff_bounded_policies (Liu et al. 2017: K+1 candidates per edge, "
       "refused above the tolerance; global mode bounds the two-sided distance to the input)",
       hausdorff_options().options(), run_hausdorff};
   hausdorff.bound_option = "tolerance";

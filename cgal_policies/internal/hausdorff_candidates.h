@@ -1,5 +1,5 @@
-// Where a Hausdorff-bounded collapse may put the merged vertex (policies.md §3): the border rule,
-// and the candidates probed at a constant step along the edge.
+// Where a Hausdorff-bounded collapse may put the merged vertex (docs/hausdorff.md): the border
+// rule, and the candidates probed at a constant step along the edge.
 #ifndef CGAL_POLICIES_INTERNAL_HAUSDORFF_CANDIDATES_H
 #define CGAL_POLICIES_INTERNAL_HAUSDORFF_CANDIDATES_H
 

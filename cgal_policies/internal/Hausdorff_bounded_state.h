@@ -1,0 +1,134 @@
+// The state the Hausdorff-bounded cost, filter and move guard share (docs/hausdorff.md), as CGAL's
+// Polyhedral_envelope is the state of Polyhedral_envelope_filter: the input surface, how the
+// changing mesh is tied to it, the scan order, and the choice pending between the filter and the
+// collapse. choose() certifies a collapse, commit_collapse() applies it once CGAL collapsed the
+// edge; try_move() does both for one vertex moved by smoothing.
+#ifndef CGAL_POLICIES_INTERNAL_HAUSDORFF_BOUNDED_STATE_H
+#define CGAL_POLICIES_INTERNAL_HAUSDORFF_BOUNDED_STATE_H
+
+#include <cgal_policies/Hausdorff_bounded_options.h>
+#include <cgal_policies/internal/Hausdorff_attachment.h>
+#include <cgal_policies/internal/Hausdorff_certifier.h>
+#include <cgal_policies/internal/Hausdorff_input_surface.h>
+#include <cgal_policies/internal/Hausdorff_patch.h>
+#include <cgal_policies/internal/Hausdorff_pending_choice.h>
+#include <cgal_policies/internal/Optional.h>
+#include <cgal_policies/internal/Storage_scan_order.h>
+#include <cgal_policies/internal/mesh_geometry.h>
+
+#include <vector>
+
+namespace cgal_policies {
+namespace internal {
+
+template <typename TriangleMesh>
+class Hausdorff_bounded_state {
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+
+ public:
+  // `input` (its points in input_vpm) is the reference surface; `tracked` is the mesh that will
+  // change (it may be the same). The tolerance is a fraction of the input's diagonal.
+  template <typename InputMesh, typename InputPointMap>
+  Hausdorff_bounded_state(const InputMesh& input, const InputPointMap& input_vpm,
+                          TriangleMesh& tracked, double tolerance_fraction,
+                          const Hausdorff_bounded_options& options)
+      : m_options(options),
+        m_input(input, input_vpm, tolerance_fraction, global()),
+        m_attachment(tracked),
+        m_scan_order(tracked),
+        m_certifier(m_input, options.reference, options.max_refinement) {}
+
+  Hausdorff_bounded_state(const Hausdorff_bounded_state&) = delete;
+  Hausdorff_bounded_state& operator=(const Hausdorff_bounded_state&) = delete;
+
+  double tolerance() const { return m_input.tolerance(); }
+  double diagonal() const { return m_input.diagonal(); }
+  const Storage_scan_order<TriangleMesh>& scan_order() const { return m_scan_order; }
+
+  // Before a run on `tm`, the input itself.
+  template <typename VertexPointMap>
+  void attach_to_itself(const TriangleMesh& tm, const VertexPointMap& vpm) {
+    m_pending.drop();
+    m_attachment.attach_to_itself(tm, vpm, global());
+    m_scan_order.record(tm);
+  }
+
+  // Before moves on `tm`, an approximation of the input made elsewhere (global reference).
+  template <typename VertexPointMap>
+  void attach_to_approximation(const TriangleMesh& tm, const VertexPointMap& vpm) {
+    m_pending.drop();
+    m_attachment.attach_to_approximation(tm, vpm, m_input, m_options.max_refinement);
+  }
+
+  // For a filter used alone, whose collapses nobody reports: what choose() accepted is taken as
+  // collapsed when the next choice is asked for.
+  void defer_commits() { m_deferred_commits = true; }
+
+  // The first of `candidates` (by the smallest lower bound of the two-sided distance) that is
+  // certified within the tolerance, or nothing; `acceptable(point)` refuses candidates first (flip
+  // check). The choice stays pending until commit_collapse().
+  template <typename Profile, typename Acceptable>
+  Optional<Eigen::Vector3d> choose(const Profile& profile,
+                                   const std::vector<Eigen::Vector3d>& candidates,
+                                   const Acceptable& acceptable) {
+    // A choice still pending was not collapsed, unless nothing calls commit_collapse().
+    if (m_deferred_commits)
+      m_pending.commit(m_attachment, m_options.reference);
+    else
+      m_pending.drop();
+    const auto patch = make_patch(profile.surface_mesh(), profile.vertex_point_map(), profile.v0(),
+                                  profile.v1(), m_attachment, m_options.reference);
+    if (is_frozen(patch, m_attachment)) return {};
+    const std::vector<Ranked_candidate> ranked = m_certifier.rank(
+        patch, candidates, to_eigen(profile.p0()), m_attachment.sample(profile.v0()).triangle,
+        to_eigen(profile.p1()), m_attachment.sample(profile.v1()).triangle, acceptable);
+    for (const Ranked_candidate& r : ranked) {
+      std::vector<Piece_cover> covers;
+      if (!m_certifier.certify(patch, candidates[r.index], r.distance, covers)) continue;
+      m_pending.hold(patch, profile.v0(), profile.v1(), candidates[r.index], r.distance,
+                     std::move(covers));
+      return candidates[r.index];
+    }
+    return {};
+  }
+
+  // Once CGAL collapsed the edge of the last choice into `kept`: moves `kept` to the chosen point
+  // and attaches the pieces of the old patch to the new faces. Nothing when no choice is pending.
+  template <typename VertexPointMap>
+  void commit_collapse(const VertexPointMap& vpm, vertex_descriptor kept) {
+    if (!m_pending.active()) return;
+    m_pending.move_vertex(vpm, kept);
+    m_pending.commit(m_attachment, m_options.reference);
+  }
+
+  // True, and the pieces attached again, when moving v to p keeps the bound; the caller moves v.
+  template <typename VertexPointMap>
+  bool try_move(const TriangleMesh& tm, const VertexPointMap& vpm, vertex_descriptor v,
+                const Eigen::Vector3d& p) {
+    m_pending.commit(m_attachment, m_options.reference);
+    const auto patch = make_patch(tm, vpm, v, v, m_attachment, m_options.reference);
+    if (is_frozen(patch, m_attachment)) return false;
+    const Reference_sample d = m_certifier.sample(patch, p, m_attachment.sample(v).triangle);
+    std::vector<Piece_cover> covers;
+    if (d.distance > tolerance() || !m_certifier.certify(patch, p, d, covers)) return false;
+    m_pending.hold(patch, v, v, p, d, std::move(covers));
+    m_pending.commit(m_attachment, m_options.reference);
+    return true;
+  }
+
+ private:
+  bool global() const { return m_options.reference == Hausdorff_reference::global; }
+
+  Hausdorff_bounded_options m_options;
+  Hausdorff_input_surface m_input;
+  Hausdorff_attachment<TriangleMesh> m_attachment;
+  Storage_scan_order<TriangleMesh> m_scan_order;
+  Hausdorff_certifier m_certifier;
+  Hausdorff_pending_choice<TriangleMesh> m_pending;
+  bool m_deferred_commits = false;
+};
+
+}  // namespace internal
+}  // namespace cgal_policies
+
+#endif  // CGAL_POLICIES_INTERNAL_HAUSDORFF_BOUNDED_STATE_H

@@ -1,0 +1,209 @@
+// The input surface of the Hausdorff-bounded policies (docs/hausdorff.md), the reference the output
+// is kept close to: its triangles, their neighbours across edges and an AABB tree. It answers how
+// far a point is from the input (a walk from a nearby triangle, else the tree) and whether a patch
+// triangle lies over a flat part of the input (Flat_frame).
+#ifndef CGAL_POLICIES_INTERNAL_HAUSDORFF_INPUT_SURFACE_H
+#define CGAL_POLICIES_INTERNAL_HAUSDORFF_INPUT_SURFACE_H
+
+#include <cgal_policies/internal/Flat_frame.h>
+#include <cgal_policies/internal/mesh_geometry.h>
+#include <cgal_policies/internal/patch_distance.h>
+#include <cgal_policies/internal/triangle_distance.h>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace cgal_policies {
+namespace internal {
+
+// A walk on the input toward a point stops after this many steps (see nearest()).
+constexpr std::size_t kWalkSteps = 64;
+// The flatness argument gives up after this many input triangles.
+constexpr std::size_t kFlatSearchLimit = 2000;
+constexpr std::uint32_t kNoNeighbour = 0xffffffffu;
+
+template <typename Mesh, typename VertexPointMap>
+Triangle_corners face_corners(typename boost::graph_traits<Mesh>::face_descriptor f, const Mesh& tm,
+                              const VertexPointMap& vpm) {
+  const auto h = halfedge(f, tm);
+  return {internal::to_eigen(get(vpm, source(h, tm))), internal::to_eigen(get(vpm, target(h, tm))),
+          internal::to_eigen(get(vpm, target(next(h, tm), tm)))};
+}
+
+class Hausdorff_input_surface {
+ public:
+  using Search_kernel = CGAL::Simple_cartesian<double>;
+  using Search_triangles = std::vector<Search_kernel::Triangle_3>;
+  using Search_tree = CGAL::AABB_tree<CGAL::AABB_traits<
+      Search_kernel,
+      CGAL::AABB_triangle_primitive<Search_kernel, Search_triangles::const_iterator>>>;
+
+  static Search_kernel::Point_3 search_point(const Eigen::Vector3d& p) {
+    return {p.x(), p.y(), p.z()};
+  }
+
+  // The tolerance is tolerance_fraction times the diagonal of the input's bounding box. Without
+  // `indexed`, only the tolerance is known: the local reference needs no input triangles.
+  template <typename InputMesh, typename VertexPointMap>
+  Hausdorff_input_surface(const InputMesh& input, const VertexPointMap& vpm,
+                          double tolerance_fraction, bool indexed) {
+    const CGAL::Bbox_3 box =
+        CGAL::Polygon_mesh_processing::bbox(input, CGAL::parameters::vertex_point_map(vpm));
+    m_diagonal =
+        std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                  CGAL::square(box.zmax() - box.zmin()));
+    m_tolerance = tolerance_fraction * m_diagonal;
+    if (!indexed) return;
+    using Input_face = typename boost::graph_traits<InputMesh>::face_descriptor;
+    std::vector<std::pair<Input_face, std::uint32_t>> index;
+    for (auto f : faces(input)) {
+      const Triangle_corners t = face_corners(f, input, vpm);
+      m_input.emplace_back(search_point(t[0]), search_point(t[1]), search_point(t[2]));
+      m_corners.push_back(t);
+      index.emplace_back(f, std::uint32_t(index.size()));
+    }
+    std::sort(index.begin(), index.end());
+    m_neighbours.resize(m_corners.size());
+    // Across edge k of input triangle i (corners k, k + 1) lies m_neighbours[i][k].
+    for (const auto& [f, i] : index) {
+      std::array<std::uint32_t, 3> across;
+      int k = 0;
+      for (auto h : CGAL::halfedges_around_face(halfedge(f, input), input)) {
+        const Input_face g = face(opposite(h, input), input);
+        const auto it = std::lower_bound(index.begin(), index.end(), std::make_pair(g, 0u));
+        across[k++] =
+            g == boost::graph_traits<InputMesh>::null_face() || it == index.end() || it->first != g
+                ? kNoNeighbour
+                : it->second;
+      }
+      m_neighbours[i] = across;
+    }
+    m_flat_state.assign(m_corners.size(), {0, 0});
+    m_tree.rebuild(m_input.begin(), m_input.end());
+    m_tree.accelerate_distance_queries();
+  }
+
+  Hausdorff_input_surface(const Hausdorff_input_surface&) = delete;
+  Hausdorff_input_surface& operator=(const Hausdorff_input_surface&) = delete;
+
+  double diagonal() const { return m_diagonal; }
+  double tolerance() const { return m_tolerance; }
+  std::size_t size() const { return m_corners.size(); }
+  const Triangle_corners& corners(std::size_t i) const { return m_corners[i]; }
+
+  // The distance from p to an input triangle near it, an upper bound of its distance to the input:
+  // a walk across the input's edges from the triangle `hint` while the distance drops, which is
+  // exact on most of a smooth surface; an upper bound is all the tests need. When it ends farther
+  // than the tolerance, the input point nearest to p, from the AABB tree seeded with the walk's end
+  // (or the previous answer).
+  Reference_sample nearest(const Eigen::Vector3d& p,
+                           std::size_t hint = Reference_sample::kNoTriangle) const {
+    const auto query = search_point(p);
+    if (hint != Reference_sample::kNoTriangle) {
+      std::uint32_t at = std::uint32_t(hint);
+      double d2 = squared_distance_to_triangle(p, m_corners[at]);
+      for (std::size_t step = 0; step < kWalkSteps; ++step) {
+        const std::uint32_t from = at;
+        for (const std::uint32_t j : m_neighbours[from]) {
+          if (j == kNoNeighbour) continue;
+          const double e2 = squared_distance_to_triangle(p, m_corners[j]);
+          if (e2 < d2) {
+            d2 = e2;
+            at = j;
+          }
+        }
+        if (at == from) break;
+      }
+      if (d2 <= m_tolerance * m_tolerance) return {std::sqrt(d2), at};
+      const auto primitive = m_input.cbegin() + at;
+      m_hint = {Search_kernel().construct_projected_point_3_object()(*primitive, query), primitive};
+      m_has_hint = true;
+    }
+    const auto nearest = m_has_hint ? m_tree.closest_point_and_primitive(query, m_hint)
+                                    : m_tree.closest_point_and_primitive(query);
+    m_hint = nearest;
+    m_has_hint = true;
+    return {std::sqrt(CGAL::squared_distance(query, nearest.first)),
+            std::size_t(nearest.second - m_input.cbegin())};
+  }
+
+  // Whether t is within the tolerance of a flat part of the input (Flat_frame). K grows from
+  // input triangles near t's corners across the input's edges, through the triangles that
+  // hold the flatness argument and whose projection may meet t's; an edge of K to a triangle that
+  // does not hold it, or to none, must not cross t. An edge to a triangle whose projection misses
+  // t's cannot.
+  bool flat_covers(const Sampled_triangle& t) const {
+    const Flat_frame frame(t.corners, m_tolerance);
+    if (!frame.valid()) return false;
+    enum : std::uint8_t { outside, kept, rejected };
+    if (++m_flat_stamp == 0) {  // wrapped: stale stamps would pass for current ones
+      std::fill(m_flat_state.begin(), m_flat_state.end(), std::make_pair(0u, std::uint8_t(0)));
+      m_flat_stamp = 1;
+    }
+    m_flat_stack.clear();
+    const auto visit = [&](std::uint32_t j) {
+      auto& [stamp, state] = m_flat_state[j];
+      if (stamp != m_flat_stamp) {
+        stamp = m_flat_stamp;
+        const Triangle_corners& q = m_corners[j];
+        state = !frame.may_meet(q) ? outside : frame.holds(q) ? kept : rejected;
+        if (state == kept) m_flat_stack.push_back(j);
+      }
+      return state;
+    };
+    // Seeds: the triangles nearest to t's corners, or, when one does not hold the argument (a
+    // corner on a crease may be nearest to the far side), the two rings of triangles around it.
+    for (const Reference_sample& s : t.samples) {
+      if (s.triangle == Reference_sample::kNoTriangle || visit(std::uint32_t(s.triangle)) == kept)
+        continue;
+      for (const std::uint32_t j : m_neighbours[s.triangle])
+        if (j != kNoNeighbour && visit(j) != kept)
+          for (const std::uint32_t k : m_neighbours[j])
+            if (k != kNoNeighbour) visit(k);
+    }
+    bool centroid = false;
+    for (std::size_t expanded = 0; !m_flat_stack.empty(); ++expanded) {
+      if (expanded == kFlatSearchLimit) return false;
+      const std::uint32_t i = m_flat_stack.back();
+      m_flat_stack.pop_back();
+      const Triangle_corners& q = m_corners[i];
+      centroid = centroid || frame.holds_centroid(q);
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t j = m_neighbours[i][k];
+        if ((j == kNoNeighbour || visit(j) == rejected) && frame.crosses(q[k], q[(k + 1) % 3]))
+          return false;
+      }
+    }
+    return centroid;
+  }
+
+ private:
+  double m_diagonal = 0;
+  double m_tolerance = 0;
+  Search_triangles m_input;
+  std::vector<Triangle_corners> m_corners;
+  std::vector<std::array<std::uint32_t, 3>> m_neighbours;
+  Search_tree m_tree;
+  mutable Search_tree::Point_and_primitive_id m_hint;
+  mutable bool m_has_hint = false;
+  mutable std::vector<std::pair<std::uint32_t, std::uint8_t>> m_flat_state;  // stamp, state
+  mutable std::uint32_t m_flat_stamp = 0;
+  mutable std::vector<std::uint32_t> m_flat_stack;
+};
+
+}  // namespace internal
+}  // namespace cgal_policies
+
+#endif  // CGAL_POLICIES_INTERNAL_HAUSDORFF_INPUT_SURFACE_H
