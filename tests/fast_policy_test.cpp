@@ -150,7 +150,7 @@ TEST(FastThresholdSimplifier, RefusesACollapseThatMakesASliver) {
 // the same collapses, exactly scaled.
 TEST(FastThresholdSimplifier, IsScaleInvariant) {
   SKIP_IF_REAL_MESHES_ARE_OFF();
-  Mesh mesh = test_meshes::read_clean_mesh("cow.obj");
+  Mesh mesh = test_meshes::read_clean_mesh("bunny.obj");
   Mesh scaled = mesh;
   for (auto v : scaled.vertices()) {
     const Point& p = scaled.point(v);

@@ -14,12 +14,13 @@
 #include <cgal_policies/internal/Quadric.h>
 #include <cgal_policies/internal/quadric_placement.h>
 
+#include <CGAL/assertions.h>
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <array>
-#include <cassert>
 #include <cmath>
 #include <cstddef>
 #include <functional>
@@ -66,7 +67,7 @@ class Fast_threshold_engine {
     for (Fast_threshold_vertex& v : vertices) m_vertices.push_back({std::move(v), 0, 0, false});
     m_triangles.reserve(triangles.size());
     for (const auto& t : triangles) {
-      assert(t[0] != t[1] && t[1] != t[2] && t[2] != t[0]);
+      CGAL_precondition(t[0] != t[1] && t[1] != t[2] && t[2] != t[0]);
       m_triangles.push_back({t, false, false, false, {}, 0});
     }
     m_live_triangles = m_triangles.size();
@@ -81,7 +82,7 @@ class Fast_threshold_engine {
   // Collapses until at most target_faces triangles remain or no collapse is allowed.
   Outcome simplify(std::size_t target_faces, const Fast_threshold_settings& settings,
                    const std::function<void(std::size_t)>& on_progress = {}) {
-    assert(settings.aggressiveness > 0 && settings.compaction_period > 0);
+    CGAL_precondition(settings.aggressiveness > 0 && settings.compaction_period > 0);
     m_cos_max_angle = std::cos(settings.max_normal_angle_deg * (std::acos(-1.0) / 180.0));
     for (Triangle& t : m_triangles) compute_errors(t);
 
