@@ -1,23 +1,11 @@
 // Border_pair_contraction: the manifold-safe part of pair contraction ([QEM-tutorial] §2.1: pairs
-// (vi, vj) with |vi - vj| < t that are not edges; docs/quadric_core.md), as a pre-pass for any
-// policy. A Surface_mesh cannot hold the non-manifold result of merging arbitrary pairs, so only
-// border vertices are paired, and only across different border loops: it closes cracks.
-//
-// - Candidates: border vertices u, v on different border loops with |u - v| < t, t =
-//   relative_distance * D (D the bounding-box diagonal). Each vertex pairs with its nearest
-//   candidate, and a pair is kept only when the choice is mutual (else refused as "ambiguous").
-// - A pair is merged (both vertices snap to their midpoint) only together with a border edge of
-//   its loop whose other end is paired across the same two loops, the two edges being stitched.
-//   A pair with no such edge would pinch the surface at one vertex (refused as "pinch"); a pair
-//   whose merge would join two vertices already linked by another edge, or make two edges meet
-//   twice, would give a non-manifold edge (refused as "duplicate_edge").
-// - Deterministic; a manifold mesh stays manifold.
-//
-// Works on CGAL::Surface_mesh (any `MutableFaceGraph` with an internal vertex point map).
-//
-// Parameters:
-//   relative_distance  t as a fraction of D (default 0: nothing is merged)
-//
+// (vi, vj), |vi - vj| < t, that are not edges; docs/quadric_core.md), a crack-closing pre-pass for
+// any policy on a `MutableFaceGraph` such as CGAL::Surface_mesh. Only border vertices of different
+// loops closer than t = relative_distance * D (D the bounding-box diagonal) pair, with their mutual
+// nearest candidate (else "ambiguous"); a pair is merged at its midpoint only with a border edge it
+// can stitch (else "pinch") and never into a doubled edge ("duplicate_edge"). Deterministic; a
+// manifold mesh stays manifold.
+// Parameter: relative_distance, t as a fraction of D (default 0: nothing is merged).
 // Usage:
 //   const cgal_policies::Border_pair_contraction contraction(1e-4);
 //   const cgal_policies::Border_pair_contraction_report report = contraction(mesh);
@@ -71,9 +59,9 @@ class Border_pair_contraction {
     using Point = typename boost::property_traits<VertexPointMap>::value_type;
     Border_pair_contraction_report report;
 
-    // Border vertices, numbered in mesh order, with their loop and outgoing border halfedge.
+    // Border vertices in mesh order, with their loop and outgoing border halfedge.
     std::vector<Vertex> vertex;
-    std::vector<Halfedge> out;  // the border halfedge leaving the vertex
+    std::vector<Halfedge> out;
     std::vector<int> loop;
     std::vector<Eigen::Vector3d> point;
     Eigen::AlignedBox3d box;
@@ -98,7 +86,7 @@ class Border_pair_contraction {
     }
     const int n = int(vertex.size());
 
-    // Nearest candidate of each border vertex, by a sweep along x (border vertices sorted).
+    // Each border vertex's nearest candidate on another loop, by a sweep along x.
     std::vector<int> order(std::size_t(n), 0);
     for (int i = 0; i < n; ++i) order[std::size_t(i)] = i;
     std::sort(order.begin(), order.end(), [&](int a, int b) {
@@ -144,7 +132,6 @@ class Border_pair_contraction {
     };
     for (bool changed = true; changed;) {
       changed = false;
-      // Where each vertex goes: the smaller-indexed vertex of its pair.
       std::map<Vertex, Vertex> representative;
       for (int i = 0; i < n; ++i)
         if (partner[i] >= 0) representative[vertex[i]] = vertex[std::min(i, partner[i])];
@@ -178,8 +165,6 @@ class Border_pair_contraction {
       }
     }
 
-    // Snap each pair to its midpoint, then stitch: the halfedge of the edge pair's second side
-    // and its opposite disappear.
     std::vector<std::pair<Halfedge, Halfedge>> to_stitch;
     for (int a = 0; a < n; ++a) {
       if (partner[a] < 0) continue;

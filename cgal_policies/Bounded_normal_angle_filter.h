@@ -1,14 +1,7 @@
-// Bounded_normal_angle_filter: refuses a collapse that would turn the normal of any surviving face
-// around the edge by more than a given angle (docs/quadric_core.md, flip prevention).
-//
-// CGAL's Bounded_normal_change_filter fixes the bound at 90 degrees; this one takes the bound as a
-// parameter and also refuses a collapse that leaves a surviving face degenerate.
-//
-// Models CGAL's `Filter` concept and decorates a base filter, which runs first.
-//
-// Parameters:
-//   max_angle_degrees  largest allowed turn of a face normal, in degrees (default 90)
-//
+// Bounded_normal_angle_filter: a CGAL `Filter` that refuses a collapse turning the normal of a
+// surviving face by more than a bound (CGAL's Bounded_normal_change_filter fixes it at 90 degrees)
+// or leaving that face degenerate (docs/quadric_core.md). It decorates a base filter, run first.
+// Parameter: max_angle_degrees, the largest allowed turn of a face normal in degrees (default 90).
 // Usage:
 //   cgal_policies::Bounded_normal_angle_filter<> filter(60.0);
 //   SMS::edge_collapse(mesh, stop, CGAL::parameters::filter(filter));
@@ -38,8 +31,7 @@ class Bounded_normal_angle_filter {
     if (!placement) return placement;
     const Eigen::Vector3d moved = internal::to_eigen(*placement);
     const auto& vpm = profile.vertex_point_map();
-    // profile.triangles() lists the faces incident to the edge first; their removal is the
-    // collapse itself. In the others, v1 is the vertex that moves.
+    // triangles() lists the edge's own faces (which vanish) first; in the others v1 moves.
     const auto& triangles = profile.triangles();
     std::size_t first = std::size_t(profile.left_face_exists()) + profile.right_face_exists();
     for (std::size_t i = first; i < triangles.size(); ++i) {

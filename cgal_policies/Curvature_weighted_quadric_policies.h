@@ -1,32 +1,10 @@
-// Curvature_weighted_quadric_policies: the approximate-curvature quadric error metric of
-// [Zhang09] (docs/curvature.md).
-//
-// - Vertex normal n_s: the normalised sum of the unit normals of the faces around s.
-// - Approximate curvature K_s (eq. 9-10): the mean, over the neighbours i of s, of cos(n_s, n_i).
-//   It is 1 on a plane and falls as the surface bends.
-// - Cost of collapsing (s, t) to x (eq. 12, with a floor):
+// Curvature_weighted_quadric_policies: the approximate-curvature quadric error metric of [Zhang09]
+// (docs/curvature.md). K_s (eq. 9-10) is the mean cos(n_s, n_i) over the neighbours i of s, 1 on a
+// plane; collapsing (s, t) to x costs (eq. 12, with a floor eps and the border planes outside f)
 //     f * x~^T Q_face x~ + x~^T Q_border x~,   f = eps + 1 - (K_s + K_t) / 2,
-//   so flat regions (f near eps) collapse first and curved detail stays. The border planes stay
-//   outside the factor, so that a flat border keeps its protection.
-// - Placement: the optimum of the unweighted quadric Q_face + Q_border (the placement chain of
-//   Classic_quadric_policies); the kept vertex gets the sums of both quadrics.
-// - After each collapse the normals and K of the kept vertex and of its neighbours are refreshed;
-//   CGAL then recomputes the cost of every edge that touches them.
-// - Ties: on a plane the weighted error is exactly zero for many edges; a term
-//   tie_break_weight * |e|^2 (|e|^4 with area weights, to keep the units of the quadrics) lets the
-//   shorter edge go first there, so that the order is geometric and the triangles stay even.
-//
-// Literal mode is eq. 12 as printed: eps = 0 and f scales the border quadric too. Then a symmetric
-// sawtooth, whose vertex normals are all parallel, costs nothing, and flat borders lose their
-// protection; the default floor eps keeps real relief from being free.
-//
-// Models CGAL's `GetCost` and `GetPlacement` concepts (one object, as CGAL's
-// GarlandHeckbert_plane_policies); its state lives in dynamic vertex properties, so the mesh gains
-// no visible property, and `Update_tag` makes `edge_collapse` call `initialize` and
-// `update_after_collapse`. Pair it with a flip filter such as Bounded_normal_angle_filter.
-//
-// Parameters: Curvature_weighted_options (eps, literal, and the shared Quadric_options).
-//
+// so flat regions go first. Placement: the optimum of Q_face + Q_border (the shared chain).
+// Models CGAL's `GetCost` and `GetPlacement` in one object with `Update_tag` (state in dynamic
+// vertex properties); pair it with a flip filter. Parameters: Curvature_weighted_options.
 // Usage:
 //   cgal_policies::Curvature_weighted_quadric_policies<Mesh, Kernel> policies(mesh);
 //   SMS::edge_collapse(mesh, stop,
@@ -62,8 +40,8 @@ class Curvature_weighted_quadric_policies
  public:
   using vertex_descriptor = typename Base::vertex_descriptor;
 
-  // Weight of the shorter-edge-first term, relative to a squared edge length: far below any real
-  // weighted error (f >= eps times a squared distance), so it only orders exact ties.
+  // Weight of the shorter-edge-first term, per squared edge length (|e|^4 with area weights): far
+  // below any real weighted error (f >= eps), so it only orders exact ties.
   static constexpr double tie_break_weight = 1e-12;
 
   explicit Curvature_weighted_quadric_policies(TriangleMesh& tm,
@@ -76,11 +54,10 @@ class Curvature_weighted_quadric_policies
     CGAL_precondition(options.eps >= 0);
   }
 
-  // For inspection (tests, reports): K of v as last refreshed, after `initialize`.
+  // K of v as last refreshed (tests, reports); valid after `initialize`.
   double approximate_curvature(vertex_descriptor v) const { return get(m_curvatures, v); }
 
-  // The factor f that weights the quadric of the edge (v0, v1). Round-off can lift K a hair above
-  // 1 on a plane, hence the clamp.
+  // The clamp absorbs round-off that lifts K a hair above 1 on a plane.
   double curvature_factor(vertex_descriptor v0, vertex_descriptor v1) const {
     return m_eps + (std::max)(0.0, 1.0 - 0.5 * (get(m_curvatures, v0) + get(m_curvatures, v1)));
   }
@@ -105,7 +82,6 @@ class Curvature_weighted_quadric_policies
           internal::approximate_curvature(source(h, tm), tm, m_normals));
   }
 
-  // f scales the face planes only (both in literal mode); the tie-break orders exact ties.
   template <typename Profile>
   double cost_of(const Profile& profile, double face_error, double border_error) const {
     const double f = curvature_factor(profile.v0(), profile.v1());

@@ -1,10 +1,8 @@
 // Fast_threshold_options: the settings of Fast_threshold_simplifier (docs/fast.md).
-//
 //   aggressiveness        a in the threshold t_k = 1e-9 (k + 3)^a D^2 of pass k, > 0 (default 7;
 //                         larger is faster and coarser)
 //   lossless              only collapses of zero error, up to round-off (default false)
-//   max_normal_angle_deg  largest turn of a surviving face normal, degrees in [0, 180]
-//                         (default 90)
+//   max_normal_angle_deg  largest turn of a surviving face normal, degrees in [0, 180] (default 90)
 //   border_weight         weight of the border planes, >= 0 (default default_border_weight)
 #ifndef CGAL_POLICIES_FAST_THRESHOLD_OPTIONS_H
 #define CGAL_POLICIES_FAST_THRESHOLD_OPTIONS_H

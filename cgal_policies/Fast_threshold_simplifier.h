@@ -1,32 +1,13 @@
-// Fast_threshold_simplifier: the "improved" quadric simplification of [Hu14] §2.2, made safe
-// (docs/fast.md). It does not run inside SMS::edge_collapse: the mesh is copied to
-// flat arrays, simplified there, and rebuilt.
-//
-// - Error of an edge: x~^T (Q0 + Q1) x~ at the placement of the shared quadric core,
-//   Q_v summing the face planes around v and border planes of weight border_weight. Each
-//   triangle stores the errors of its three edges.
-// - Passes k = 0, 1, ... scan the triangles in order and collapse an edge whose error is below
-//   t_k = 1e-9 (k + 3)^a D^2 (D the bounding-box diagonal, so the schedule is scale-invariant),
-//   at most one collapse per triangle per pass; reference lists are compacted every few passes.
-//   Ours: a pass also takes only errors within the cheapest 40% of the triangles not refused
-//   since they last changed, so that cheap edges go first even where t_0 already exceeds nearly
-//   every error (on fine meshes, where storage order would otherwise decide).
-// - A collapse is refused when it breaks the link condition (which the report's method lacks: a
-//   manifold input gives a manifold output), when it turns a surviving face normal by more than
-//   max_normal_angle_deg, or when it makes a needle or a sliver (twice the area over the squared
-//   longest edge below 1e-6 and below the face's own before); a face already degenerate in the
-//   input does not block the collapses that remove it. A border vertex only moves along the
-//   border (an edge from the interior keeps the border end in place).
-// - Lossless mode: only collapses of error zero up to round-off (1e-14 D^2).
-// - Deterministic: the same mesh gives the same result.
-//
-// Works on any `MutableFaceGraph` triangle mesh with an internal vertex point map (e.g.
-// CGAL::Surface_mesh): the mesh is cleared and rebuilt, which an external point map would not
-// survive, so descriptors and user properties are not kept either.
-//
-// Parameters: Fast_threshold_options (aggressiveness, lossless, max_normal_angle_deg,
-// border_weight).
-//
+// Fast_threshold_simplifier: the "improved" threshold-driven QEM of [Hu14] §2.2, made safe
+// (docs/fast.md). Not an SMS::edge_collapse policy: the mesh is copied to flat arrays, simplified
+// there and rebuilt. Pass k collapses, in storage order and at most once per triangle, edges whose
+// quadric error is below t_k = 1e-9 (k + 3)^a D^2 (D the bounding-box diagonal) and below a level
+// cap that keeps cheap edges first (ours). Refused: collapses that break the link condition
+// (missing in [Hu14]; a manifold input stays manifold), turn a face normal by more than
+// max_normal_angle_deg or make a needle or sliver; border vertices move only along the border.
+// Lossless mode: zero-error collapses only. Deterministic. For a `MutableFaceGraph` triangle mesh
+// with an internal vertex point map (e.g. CGAL::Surface_mesh): it is cleared and rebuilt, which no
+// external point map, descriptor or user property survives. Parameters: Fast_threshold_options.
 // Usage:
 //   cgal_policies::Fast_threshold_simplifier simplifier;
 //   const auto report = simplifier(mesh, mesh.number_of_faces() / 100);  // keep 1%
@@ -69,7 +50,6 @@ class Fast_threshold_simplifier {
     m_settings.max_normal_angle_deg = options.max_normal_angle_deg;
   }
 
-  // Simplifies tm until at most target_faces faces remain, or no allowed collapse is left.
   // on_progress, when set, receives the face count after each pass.
   template <typename TriangleMesh>
   Fast_threshold_report operator()(TriangleMesh& tm, std::size_t target_faces,
@@ -79,8 +59,7 @@ class Fast_threshold_simplifier {
         typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type>::value_type;
     const auto vpm = get(CGAL::vertex_point, tm);
 
-    // To arrays: points, quadrics and border flags per vertex, index triples per face. The
-    // dynamic maps live in this block only, so that they are gone when tm is cleared.
+    // The dynamic maps live in this block only, so that they are gone when tm is cleared.
     std::vector<internal::Fast_threshold_vertex> vertex_data;
     std::vector<std::array<int, 3>> triangles;
     Eigen::AlignedBox3d box;
@@ -109,7 +88,6 @@ class Fast_threshold_simplifier {
     report.passes = outcome.passes;
     report.target_reached = outcome.target_reached;
 
-    // Back to the mesh.
     std::vector<Eigen::Vector3d> points;
     engine.extract(points, triangles);
     CGAL::clear(tm);  // which resets the internal point map too

@@ -1,9 +1,7 @@
-// Feature_fusion_options: the settings of Feature_fusion_policies (docs/fusion.md), on top of the
-// shared quadric settings.
-//
+// Feature_fusion_options: the settings of Feature_fusion_policies (docs/fusion.md, which says how
+// the defaults were chosen), on top of Quadric_options.
 //   mu             weight of the normal variation, per radian, >= 0 (default 2)
-//   visual_weight  w_v, weight of the visual term, >= 0 (default 0: off; docs/fusion.md says how
-//                  both defaults were chosen)
+//   visual_weight  w_v, weight of the visual term, >= 0 (default 0: off)
 #ifndef CGAL_POLICIES_FEATURE_FUSION_OPTIONS_H
 #define CGAL_POLICIES_FEATURE_FUSION_OPTIONS_H
 

@@ -1,40 +1,12 @@
-// Feature_fusion_policies: the multi-feature fusion cost of [Wang13], a quadric error weighted by
-// the normal variation plus a visual term, the normal twist weighted by the triangles' side ratio
-// (docs/fusion.md).
-//
+// Feature_fusion_policies: the multi-feature fusion cost of [Wang13] (docs/fusion.md):
 //   Cost_all = C_geom + C_visu                               (the paper's eq. 3)
 //   C_geom   = (1 + mu * omega(e)) * x~^T F x~ + x~^T B x~     (ours)
 //   C_visu   = w_v * zeta(e) * T(e) * L0^2                    (the paper's zeta * T; w_v, L0 ours)
-// with F and B the sums of the face-plane and border-plane quadrics of both ends.
-//
-// What is the paper's and what is ours: the paper gives eq. 3, the QEM of eqs. 1-2 and the side
-// ratio zeta of eq. 9 (edge length over the sum of the other edges of its two triangles, or of
-// its one triangle on a border), implemented exactly; it says in words that normals weight the
-// quadric and that zeta weights a torsion, but its eqs. 4-8 (the normal weight and the torsion)
-// are missing from the text. The rest is our reconstruction:
-//   omega(e) = max(thbar(v0), thbar(v1)), thbar(v) the mean angle (radians) between the
-//     area-weighted normal of v and those of its neighbours; the factor 1 + mu omega is >= 1, so
-//     it never discounts real error; it weights the face planes only, the border planes keep
-//     their weight W_b (scaling them too would make borders stiffer wherever the normals vary);
-//   T(e) = max(T(v0), T(v1)), T(v) the mean |normal twist| along the edges around v, the twist
-//     being (n_j - n_v) . (nbar x t) (about the geodesic torsion times the edge length): zero on
-//     planes and spheres, large where the surface twists (saddles, anisotropic curvature);
-//   L0, the mean edge length of the input, gives C_visu the units of the quadric, so the whole cost
-//     is scale-invariant.
-// Placement is the optimum of F + B (the shared placement chain); the merged vertex keeps
-// both sums. After each collapse the normals of the kept vertex and its neighbours, the angles and
-// twists stored on their edges, and thbar and T one ring further, are brought up to date (equal
-// to a fresh computation: thbar and T are means of fixed-point sums, see
-// internal::Normal_variation_sum); the twists are not computed at all while w_v = 0, where C_visu
-// is off.
-//
-// Models CGAL's `GetCost` and `GetPlacement` concepts (one object, as CGAL's
-// GarlandHeckbert_plane_policies); its state lives in dynamic vertex properties, so the mesh gains
-// no visible property, and `Update_tag` makes `edge_collapse` call `initialize` and
-// `update_after_collapse`. Pair it with a flip filter such as Bounded_normal_angle_filter.
-//
-// Parameters: Feature_fusion_options (mu, visual_weight, and the shared Quadric_options).
-//
+// F, B: the face-plane and border-plane quadrics of both ends; zeta: eq. 9's side ratio; omega, T:
+// normal variation (radians) and twist, our reconstruction of the missing eqs. 4-8; L0: the
+// input's mean edge length, for scale invariance. Placement: the optimum of F + B.
+// Models CGAL's `GetCost` and `GetPlacement` in one object with `Update_tag` (state in dynamic
+// properties); pair it with a flip filter, as below. Parameters: Feature_fusion_options.
 // Usage:
 //   cgal_policies::Feature_fusion_policies<Mesh, Kernel> policies(mesh);
 //   cgal_policies::Bounded_normal_angle_filter<> filter;
@@ -77,13 +49,12 @@ class Feature_fusion_policies
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
 
-  // Everything the cost reads about a vertex besides its quadrics, in one property.
   struct Vertex_features {
     Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // area-weighted, unit
     internal::Normal_variation_sum variation;          // the sums behind thbar(v) and T(v)
     std::size_t stamp = 0;                             // the last update that refreshed the normal
   };
-  // A face's area normal, initialised so that the property's default value is defined.
+  // A struct, so that the property's default value is initialised.
   struct Face_normal {
     Eigen::Vector3d area_normal = Eigen::Vector3d::Zero();
   };
@@ -100,7 +71,7 @@ class Feature_fusion_policies
     CGAL_precondition(options.visual_weight >= 0);
   }
 
-  // The terms of the cost, for tests and inspection; valid once `initialize` has run.
+  // For tests and inspection; valid once `initialize` has run.
   double normal_factor(vertex_descriptor v0, vertex_descriptor v1) const {
     return 1.0 + m_mu * (std::max)(get(m_features, v0).variation.mean_angle(),
                                    get(m_features, v1).variation.mean_angle());
@@ -130,10 +101,8 @@ class Feature_fusion_policies
   void update_features(const Profile& profile, vertex_descriptor kept) const {
     const TriangleMesh& tm = profile.surface_mesh();
     const auto vpm = profile.vertex_point_map();
-    // The faces around the kept vertex moved: the normals of the vertex and its neighbours change
-    // (they get this update's stamp), hence the terms of the edges at them. Their sums are
-    // recomputed; a vertex one ring further only swaps the terms of its edges to them, which
-    // spares reading its other edges.
+    // The normals of `kept` and its ring changed (they get this update's stamp), hence the terms of
+    // their edges; a vertex one ring further only swaps those terms in its sums.
     const auto ring = CGAL::vertices_around_target(halfedge(kept, tm), tm);
     ++m_stamp;
     for (auto f : CGAL::faces_around_target(halfedge(kept, tm), tm))
@@ -160,8 +129,7 @@ class Feature_fusion_policies
     for (vertex_descriptor j : ring) refresh_sums(j, tm);
   }
 
-  // The factor scales the face planes only: scaling the border planes too would make borders
-  // stiffer wherever the normals vary.
+  // The factor scales the face planes only, or borders would stiffen wherever normals vary.
   template <typename Profile>
   double cost_of(const Profile& profile, double face_error, double border_error) const {
     const double geometric = normal_factor(profile.v0(), profile.v1()) * face_error + border_error;
@@ -173,8 +141,7 @@ class Feature_fusion_policies
     return geometric + visual;
   }
 
-  // The area-weighted normal of v (internal::vertex_normal) from the stored face normals, which
-  // only the faces around the kept vertex invalidate.
+  // The area-weighted normal, from stored face normals that only the kept vertex's faces change.
   void refresh_normal(vertex_descriptor v, const TriangleMesh& tm) const {
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     for (auto f : CGAL::faces_around_target(halfedge(v, tm), tm))
@@ -186,8 +153,7 @@ class Feature_fusion_policies
     put(m_features, v, features);
   }
 
-  // The term of h's edge from the current normals, computed on the edge's own halfedge so that it
-  // does not depend on which end asks. The twist only matters when w_v > 0.
+  // Computed on the edge's own halfedge, so that it does not depend on which end asks.
   template <typename VertexPointMap>
   internal::Normal_variation_sum edge_term(halfedge_descriptor h, const TriangleMesh& tm,
                                            const VertexPointMap& vpm) const {
@@ -196,7 +162,6 @@ class Feature_fusion_policies
         halfedge(edge(h, tm), tm), tm, vpm, normal, m_visual_weight != 0));
   }
 
-  // The sums behind thbar(v) and T(v) from the stored edge terms.
   void refresh_sums(vertex_descriptor v, const TriangleMesh& tm) const {
     const auto stored_term = [&](halfedge_descriptor h) { return get(m_edge_terms, edge(h, tm)); };
     Vertex_features features = get(m_features, v);

@@ -1,20 +1,12 @@
-// Hausdorff_bounded_cost: the priority of an edge for Hausdorff_bounded_policies ([Liu17] §2.3;
-// docs/hausdorff.md), and the hook where a collapse the filter chose is applied.
-//
-// - Collapse_order::by_cost: the quadric error of the edge (Classic_quadric_policies), cheap
-//   enough to refresh for every edge a collapse touches; the two-sided distance itself is measured
-//   by Hausdorff_bounded_filter when the edge is popped.
-// - Collapse_order::storage: the edge's place in storage order, once ([Liu17]'s single pass).
-// - update_after_collapse() moves the kept vertex to the point the filter chose and attaches the
-//   old patch's input pieces to the new faces (why there: Hausdorff_bounded_policies.h).
-//
-// Models CGAL's `GetCost` concept with `Update_tag`.
-//
+// Hausdorff_bounded_cost: a CGAL `GetCost` with `Update_tag`, the edge priority of
+// Hausdorff_bounded_policies ([Liu17] §2.3; docs/hausdorff.md). by_cost: the edge's quadric error,
+// cheap enough to refresh for every edge a collapse touches (the filter measures distances when
+// it is popped); storage: its place in storage order, once ([Liu17]'s single pass). Its
+// update_after_collapse() applies the filter's choice (Hausdorff_bounded_policies.h says why).
 // Parameters:
 //   state     the shared state (not null), owned by Hausdorff_bounded_policies
 //   quadrics  the quadric state, shared with the placement
 //   order     Collapse_order::by_cost or Collapse_order::storage
-//
 // Usage: built by Hausdorff_bounded_policies, used through its get_cost():
 //   cgal_policies::Hausdorff_bounded_policies<Mesh, Kernel> policies(mesh);
 //   SMS::edge_collapse(mesh, stop, CGAL::parameters::get_cost(policies.get_cost()) /* ... */);

@@ -1,25 +1,14 @@
-// Hausdorff_bounded_filter: refuses a collapse unless it keeps the two-sided Hausdorff distance
-// between the output and the input within a tolerance tau ([Liu17] §2.3: accept when the best
-// distance <= lambda * alpha, lambda = psi(M0) * beta; docs/hausdorff.md).
-//
-// Within Hausdorff_bounded_policies it probes the K + 1 points at a constant step along the edge
-// and the placement it is given, subject to the border rule and the flip check
-// (Bounded_normal_angle_filter), and returns the one with the smallest lower bound of its
-// two-sided patch distance that passes the conservative test. The collapse reaches that point
-// through Hausdorff_bounded_cost::update_after_collapse (Hausdorff_bounded_policies.h explains).
-//
-// Alone, around any cost and placement, it certifies only the placement it is given against the
-// mesh as it was when the filter was built (an error bound for any policy).
-//
-// Models CGAL's `Filter` concept and decorates a base filter, which runs first. It must be the
-// outermost filter: what it accepts is taken as collapsed.
-//
+// Hausdorff_bounded_filter: a CGAL `Filter` that refuses a collapse unless the output stays within
+// tau of the input in two-sided Hausdorff distance ([Liu17] §2.3: accept when the best distance
+// <= lambda * alpha, lambda = psi(M0) * beta; docs/hausdorff.md). Within Hausdorff_bounded_policies
+// it picks among the K + 1 points along the edge and the placement; alone, around any cost and
+// placement, it certifies only the placement, against the mesh as it was when built. It decorates
+// a base filter, run first, and must be the outermost: what it accepts is taken as collapsed.
 // Parameters (alone):
 //   tm           the mesh to simplify, also the reference (as it is now)
 //   tolerance    tau as a fraction of the diagonal D of tm's bounding box, > 0
 //   base_filter  runs first (default: accepts everything)
 //   vpm          tm's vertex point map (default: get(CGAL::vertex_point, tm))
-//
 // Usage (alone, bounding any policy to 0.5% of D):
 //   cgal_policies::Hausdorff_bounded_filter<Mesh, Kernel> bound(mesh, 0.005);
 //   SMS::edge_collapse(mesh, stop, CGAL::parameters::get_cost(c).get_placement(p).filter(bound));

@@ -1,24 +1,20 @@
-// The parameters of Hausdorff_bounded_policies and its cost, placement and filter ([Liu17] §2.3:
-// tolerance factor beta, simplification coefficient alpha; docs/hausdorff.md). Ranges and defaults
-// are listed in Hausdorff_bounded_policies.h.
+// The parameters of Hausdorff_bounded_policies and its parts ([Liu17] §2.3; docs/hausdorff.md);
+// Hausdorff_bounded_policies.h lists their ranges and defaults.
 #ifndef CGAL_POLICIES_HAUSDORFF_BOUNDED_OPTIONS_H
 #define CGAL_POLICIES_HAUSDORFF_BOUNDED_OPTIONS_H
 
 namespace cgal_policies {
 
-// What a candidate patch is measured against.
 enum class Hausdorff_reference {
   global,  // the original surface: the output stays within the tolerance of the input
   local    // [Liu17]'s literal rule: the current patch, so errors may accumulate
 };
 
-// In which order edges are tried.
 enum class Collapse_order {
   by_cost,  // CGAL's priority queue, keyed by the quadric error of the edge
   storage   // [Liu17]'s single pass over the edges in storage order
 };
 
-// What border vertices may do.
 enum class Border_rule {
   slide,  // move only along the border
   lock    // never move (and are never removed)

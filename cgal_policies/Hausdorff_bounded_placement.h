@@ -1,16 +1,10 @@
-// Hausdorff_bounded_placement: the point CGAL's queue places the merged vertex at for
-// Hausdorff_bounded_policies ([Liu17] §2.2; docs/hausdorff.md): the quadric optimum of
-// Classic_quadric_policies, restricted by the border rule. A vertex on the border stays put, a
-// border edge slides along itself, and two border vertices not joined by a border edge (any border
-// vertex with Border_rule::lock) refuse the collapse. It is only a proposal: the filter certifies
-// it or a better candidate, and the collapse ends where the filter chose.
-//
-// Models CGAL's `GetPlacement` concept.
-//
+// Hausdorff_bounded_placement: a CGAL `GetPlacement`, where CGAL's queue puts the merged vertex for
+// Hausdorff_bounded_policies ([Liu17] §2.2; docs/hausdorff.md): the quadric optimum restricted by
+// the border rule (a border vertex stays, a border edge slides along itself, other border pairs
+// and locked borders refuse). Only a proposal: the collapse ends where the filter chose.
 // Parameters:
 //   quadrics  the quadric state, shared with the cost that orders the queue
 //   border    Border_rule::slide (default) or Border_rule::lock
-//
 // Usage (the quadric optimum kept off the border, without the bound):
 //   cgal_policies::Classic_quadric_policies<Mesh, Kernel> quadrics(mesh);
 //   cgal_policies::Hausdorff_bounded_placement<Mesh, Kernel> placement(quadrics);

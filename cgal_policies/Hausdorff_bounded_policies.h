@@ -1,18 +1,11 @@
-// Hausdorff_bounded_policies: edge collapses that keep the simplified surface within a tolerance
-// of the original, in both directions, after [Liu17] §2.2-2.3 (docs/hausdorff.md).
-//
-// - Tolerance tau = alpha * beta * D, D the diagonal of the input's bounding box ([Liu17]'s
-//   lambda * alpha with lambda = psi(M0) * beta).
-// - A popped edge's merged vertex is probed at K + 1 points at a constant step along the edge and
-//   at the quadric optimum; of those certified within tau, the one with the smallest lower bound
-//   of its two-sided patch distance wins, else the edge is refused.
-// - Hausdorff_reference::global measures candidates against the input, so the output's two-sided
-//   Hausdorff distance to the input never exceeds tau; local is [Liu17]'s literal rule, against
-//   the current patch, so errors accumulate.
-//
-// Models CGAL's `GetCost` (get_cost()), `GetPlacement` (get_placement()) and `Filter`
-// (get_filter()) concepts, which share m_state: this object must outlive the run.
-//
+// Hausdorff_bounded_policies: edge collapses that keep the output within tau = alpha * beta * D (D
+// the input's bounding-box diagonal; [Liu17]'s lambda * alpha, lambda = psi(M0) * beta) of the
+// input in two-sided Hausdorff distance, after [Liu17] §2.2-2.3 (docs/hausdorff.md). A popped
+// edge's merged vertex is probed at K + 1 points at a constant step along the edge and at the
+// quadric optimum; the certified one with the smallest lower bound wins, else the edge is refused.
+// Global reference bounds the whole output; local ([Liu17]'s literal rule) lets errors accumulate.
+// Models CGAL's `GetCost`, `GetPlacement` and `Filter` (get_cost(), get_placement(),
+// get_filter()), which share m_state: this object must outlive the run.
 // Parameters (Hausdorff_bounded_options):
 //   beta                  tolerance factor, a fraction of D, > 0 (default 0.005)
 //   alpha                 simplification coefficient, in (0, 1] (default 1)
@@ -23,7 +16,6 @@
 //   max_normal_angle_deg  largest turn of a face normal, in degrees (default 90)
 //   border_weight         weight of the border planes of the quadric, >= 0 (default 1000)
 //   max_refinement        sample grids are refined up to 2^n steps per edge, >= 0 (default 5)
-//
 // Usage:
 //   cgal_policies::Hausdorff_bounded_options options;
 //   options.beta = 0.01;  // 1% of the diagonal
@@ -33,22 +25,18 @@
 //                          .get_placement(policies.get_placement())
 //                          .filter(policies.get_filter()));
 //
-// The choose / collapse / commit protocol (docs/hausdorff.md, "The choose / collapse / commit
-// protocol"), as SMS::edge_collapse calls the three in CGAL 5.5:
+// The choose / collapse / commit protocol (docs/hausdorff.md) under CGAL 5.5's SMS::edge_collapse:
 // 1. initialize(), on the cost: every input face becomes a piece attached to itself.
-// 2. Whenever an edge's cost is computed: get_placement() gives the quadric optimum restricted by
-//    the border rule, which get_cost() ranks. It runs for every edge around every collapse, so it
-//    must stay cheap: the certified search is left to the filter.
-// 3. An edge is popped: get_filter() certifies the best candidate and keeps it pending in m_state
-//    (the point, and the new faces the old patch's pieces go to), and returns it.
-// 4. CGAL collapses that edge at once, the filter being the last check (so it must be the
-//    outermost filter), and puts the kept vertex at the PLACEMENT's point: the point a filter
-//    returns only means "accepted".
-// 5. OnCollapsed, then the cost's update_after_collapse(): it moves the kept vertex to the point
-//    the filter chose and attaches the pieces. This is the first hook after the collapse and runs
-//    before CGAL computes the costs around the kept vertex again, so they see the vertex where it
-//    ends. A choice no collapse follows (a filter asked directly) is dropped by the next one.
-// tests/hausdorff_filter_test.cpp (HausdorffBoundedProtocol) fails if CGAL changes this order.
+// 2. Every edge whose cost is computed: get_placement() gives the quadric optimum restricted by the
+//    border rule, get_cost() ranks it; this runs around every collapse, so it must stay cheap.
+// 3. An edge is popped: get_filter() certifies the best candidate, holds it in m_state (the point,
+//    and the new faces the old patch's pieces go to) and returns it.
+// 4. CGAL collapses that edge at once (so the filter must be the outermost) and puts the kept
+//    vertex at the PLACEMENT's point: the point a filter returns only means "accepted".
+// 5. After OnCollapsed, the cost's update_after_collapse() moves the kept vertex to the chosen
+//    point and attaches the pieces, before CGAL recomputes the costs around it.
+// A choice no collapse follows is dropped by the next one. The HausdorffBoundedProtocol tests fail
+// if CGAL changes this order.
 #ifndef CGAL_POLICIES_HAUSDORFF_BOUNDED_POLICIES_H
 #define CGAL_POLICIES_HAUSDORFF_BOUNDED_POLICIES_H
 

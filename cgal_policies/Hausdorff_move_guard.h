@@ -1,21 +1,13 @@
-// Hausdorff_move_guard: a predicate for Laplacian_smoother that refuses any vertex move that would
-// break a two-sided Hausdorff bound between a mesh and the original it approximates ([Liu17] §2.4,
-// bounded; docs/hausdorff.md).
-//
-// The original's triangles are attached, split if need be, to faces of the current mesh that
-// cover them within the tolerance. A move is made only when the vertex's new star is certified
-// within the tolerance of the original and every piece attached to the star is still covered by
-// one of its faces. Where the given mesh already breaks the bound, the faces concerned are frozen.
-//
-// Models the `allow_move(v, point)` predicate of Laplacian_smoother::smooth().
-//
+// Hausdorff_move_guard: an allow_move(v, point) predicate for Laplacian_smoother::smooth() that
+// refuses any move breaking a two-sided Hausdorff bound between a mesh and the original it
+// approximates ([Liu17] §2.4, bounded; docs/hausdorff.md): the vertex's star must stay certified
+// and the original's pieces attached to it covered; faces already breaking the bound are frozen.
 // Parameters:
 //   original      the reference surface
 //   current       the mesh to smooth; it must outlive the guard and change only by allowed moves
 //   tolerance     the bound as a fraction of the original's bounding-box diagonal D, > 0
 //   original_vpm  original's vertex point map (default: get(CGAL::vertex_point, original))
 //   current_vpm   current's vertex point map (default: get(CGAL::vertex_point, current))
-//
 // Usage:
 //   cgal_policies::Hausdorff_move_guard<Mesh> guard(original, simplified, 0.005);
 //   cgal_policies::Laplacian_smoother<Mesh>().smooth(simplified, 10, guard);

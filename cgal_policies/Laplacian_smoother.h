@@ -1,24 +1,15 @@
-// Laplacian_smoother: Laplacian smoothing as a post-process of simplification ([Liu17] §2.4,
-// eq. 8-9; docs/hausdorff.md).
-//
-// Each pass moves every interior vertex at once towards the weighted mean U of its neighbours,
-// P <- P + lambda (U - P), with uniform weights or w_i = 1 / |P - p_i| (eq. 8). Border vertices
-// stay fixed. Plain Laplacian smoothing shrinks the shape; Taubin's variant follows each lambda
-// pass with a pass of factor mu < 0 (default -0.53) that inflates it back.
-//
-// An optional predicate allow_move(v, point) vets each move (e.g. Hausdorff_move_guard, which
-// refuses a move that would break a two-sided distance bound); moves are then made one vertex at a
-// time, in vertex order, towards the targets computed from the positions before the pass.
-//
-// Points are read and written through a vertex point map (default: the mesh's own).
-//
+// Laplacian_smoother: Laplacian smoothing after simplification ([Liu17] §2.4, eq. 8-9;
+// docs/hausdorff.md). Each pass moves every interior vertex towards the weighted mean U of its
+// neighbours, P <- P + lambda (U - P), weights 1 or w_i = 1 / |P - p_i| (eq. 8), with targets
+// computed before the pass; border vertices stay. Taubin's variant [Taubin95] adds a pass of factor
+// mu < 0 against shrinking. An optional allow_move(v, point), e.g. Hausdorff_move_guard, vets each
+// move in vertex order. Points go through a vertex point map (default: the mesh's).
 // Parameters:
 //   rate        lambda in [0, 1] (default 0.5)
 //   weights     Smoothing_weights::uniform (default) or Smoothing_weights::inverse_distance
 //   method      Smoothing_method::laplacian (default) or Smoothing_method::taubin
 //   mu          Taubin's inflating factor, negative (default -0.53)
 //   iterations  passes of smooth(), >= 0
-//
 // Usage:
 //   using cgal_policies::Smoothing_method;
 //   using cgal_policies::Smoothing_weights;
@@ -57,8 +48,7 @@ class Laplacian_smoother {
     CGAL_precondition(rate >= 0 && rate <= 1);
   }
 
-  // Runs `iterations` passes (lambda then mu for Taubin) and returns how many moves allow_move
-  // refused.
+  // Returns how many moves allow_move refused (a Taubin iteration is a lambda and a mu pass).
   template <typename AllowMove>
   std::size_t smooth(TriangleMesh& tm, int iterations, const AllowMove& allow_move) const {
     return smooth(tm, iterations, allow_move, get(CGAL::vertex_point, tm));

@@ -1,10 +1,8 @@
-// Quadric_options: the settings every quadric policy of this library shares (docs/quadric_core.md).
-//
-//   border_weight   W_b, the weight of the plane through each border edge perpendicular to its
-//                   face (>= 0; default default_border_weight). With area weights it is multiplied
-//                   by the squared edge length, so that it keeps the units of a face quadric.
-//   face_weighting  Face_weighting::unit (default, as in the papers) or Face_weighting::area.
-//
+// Quadric_options: the settings every quadric policy here shares (docs/quadric_core.md).
+//   border_weight   W_b, weight of the plane through each border edge perpendicular to its face,
+//                   >= 0 (default default_border_weight); times |e|^2 with area weights, to keep
+//                   the units of a face quadric
+//   face_weighting  Face_weighting::unit (default, as in the papers) or Face_weighting::area
 // Usage:
 //   cgal_policies::Quadric_options options;
 //   options.face_weighting = cgal_policies::Face_weighting::area;
@@ -16,8 +14,7 @@
 
 namespace cgal_policies {
 
-// The border weight of every policy here: large enough that a border moves off its line only when
-// nothing else is left, as in the QEM tutorial.
+// Large enough that a border leaves its line only when nothing else is left ([QEM-tutorial]).
 constexpr double default_border_weight = 1000.0;
 
 struct Quadric_options {

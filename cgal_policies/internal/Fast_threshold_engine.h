@@ -1,13 +1,5 @@
-// The flat-array engine of the fast threshold QEM ([Hu14] §2.2; docs/fast.md): triangles carry
-// the errors of their three edges, and passes k = 0, 1, ... collapse, in storage order, every edge
-// whose error lies below the rising threshold t_k = 1e-9 (k + 3)^a D^2. A triangle touched by a
-// collapse waits for the next pass. Unlike the report's method, a collapse must pass the link
-// condition, so a manifold input stays a manifold, and must not make a needle or a sliver.
-//
-// Ours too: a pass's threshold is also capped at the error of the cheapest 40% of the triangles
-// still open to a collapse. On a fine mesh t_0 already exceeds nearly every edge error, so without
-// the cap every pass collapses in storage order and the cheap edges no longer go first
-// (docs/fast.md, "The level cap", has the figures).
+// The flat-array engine of Fast_threshold_simplifier ([Hu14] §2.2; docs/fast.md): threshold
+// passes over triangles that store their edges' errors, with the checks the report lacks.
 #ifndef CGAL_POLICIES_INTERNAL_FAST_THRESHOLD_ENGINE_H
 #define CGAL_POLICIES_INTERNAL_FAST_THRESHOLD_ENGINE_H
 
@@ -46,17 +38,15 @@ struct Fast_threshold_vertex {
 
 class Fast_threshold_engine {
  public:
-  // Threshold factor of the report's schedule, relative to D^2.
+  // t_k = kThresholdScale (k + 3)^a D^2: [FQMS]'s schedule, made relative to D^2.
   static constexpr double kThresholdScale = 1e-9;
   // Errors below this fraction of D^2 are round-off: the lossless mode collapses only those.
   static constexpr double kLosslessTolerance = 1e-14;
-  // The share of the open triangles (neither deleted nor refused since their last change) whose
-  // errors may pass in one pass (docs/fast.md: chosen on the dragons against gh).
+  // The level cap: a pass takes only errors within this share of the open triangles (neither
+  // deleted nor refused since they changed), so that cheap edges still go first (docs/fast.md).
   static constexpr double kPassShare = 0.4;
-  // Twice the area over the squared longest edge (sqrt(3)/2 for an equilateral triangle) below
-  // which a face counts as a needle or a sliver: a collapse may not make one, nor make one worse.
-  // A guard against faces too thin for a reliable normal, not a quality rule: a larger bound keeps
-  // the faces around tiny holes (3 short border edges each) from growing (docs/fast.md).
+  // Twice the area over the squared longest edge (sqrt(3)/2 when equilateral) below which a face
+  // has no reliable normal: no collapse makes one, or a thinner one (docs/fast.md, "Sliver guard").
   static constexpr double kMinimumFaceShape = 1e-6;
 
   // Precondition: every triangle has three distinct vertex indices in range.
@@ -79,7 +69,6 @@ class Fast_threshold_engine {
     bool target_reached = false;
   };
 
-  // Collapses until at most target_faces triangles remain or no collapse is allowed.
   Outcome simplify(std::size_t target_faces, const Fast_threshold_settings& settings,
                    const std::function<void(std::size_t)>& on_progress = {}) {
     CGAL_precondition(settings.aggressiveness > 0 && settings.compaction_period > 0);
@@ -132,9 +121,8 @@ class Fast_threshold_engine {
       if (on_progress) on_progress(m_live_triangles);
 
       if (collapses == 0 && !held_back) {
-        // Nothing changed and the level held nothing back: the next pass that can do anything
-        // is the one whose threshold exceeds the smallest waiting error; none exists when
-        // nothing waits. (Held back, the next level rises: this pass's tries are now refused.)
+        // Idle, nothing held back: jump to the first pass whose threshold exceeds the smallest
+        // waiting error, or stop if none waits. (Held back: the level rises, those tries refused.)
         if (settings.lossless || !std::isfinite(smallest_waiting)) break;
         k = (std::max)(k + 1,
                        std::ceil(std::pow(smallest_waiting / (kThresholdScale * m_squared_diagonal),
@@ -154,7 +142,6 @@ class Fast_threshold_engine {
 
   std::size_t face_count() const { return m_live_triangles; }
 
-  // The surviving vertices (input order) and the triangles over them, renumbered.
   void extract(std::vector<Eigen::Vector3d>& points, std::vector<std::array<int, 3>>& triangles) {
     compact();
     std::vector<int> index(m_vertices.size(), -1);
@@ -190,8 +177,7 @@ class Fast_threshold_engine {
     int corner;  // v's position in the triangle
   };
 
-  // The cost of collapsing (a, b) and where the merged vertex goes. A border vertex moves only
-  // along the border: an edge from the interior to the border keeps the border vertex in place.
+  // With one end on the border, the merged vertex stays at that end.
   double edge_error(int a, int b, Eigen::Vector3d& placement) const {
     const Fast_threshold_vertex& va = m_vertices[a].data;
     const Fast_threshold_vertex& vb = m_vertices[b].data;
@@ -204,7 +190,6 @@ class Fast_threshold_engine {
     return std::isfinite(error) ? (std::max)(0.0, error) : std::numeric_limits<double>::infinity();
   }
 
-  // Computes the errors of the three edges of t, which is open again.
   void compute_errors(Triangle& t) {
     Eigen::Vector3d unused;
     for (int j = 0; j < 3; ++j) t.error[j] = edge_error(t.v[j], t.v[(j + 1) % 3], unused);
@@ -212,9 +197,7 @@ class Fast_threshold_engine {
     t.refused = false;
   }
 
-  // Recomputes the errors of the two edges of t at corner `at`, whose vertex has just changed.
-  // Each edge around that vertex is shared by two of its triangles: m_star_errors keeps the
-  // errors computed so far in this collapse, by the edge's other end, so each is computed once.
+  // m_star_errors: this collapse's errors by the edge's other end (each edge is in two triangles).
   void refresh_corner(Triangle& t, int at) {
     for (int j : {at, (at + 2) % 3}) {
       const int other = t.v[j == at ? (at + 1) % 3 : j];
@@ -232,8 +215,7 @@ class Fast_threshold_engine {
     t.refused = false;
   }
 
-  // The error at the kPassShare quantile of the open triangles (+inf when none is open). Refused
-  // triangles are left out: cheap but blocked, they would otherwise hold the level down for good.
+  // Refused triangles are left out: cheap but blocked, they would hold the level down for good.
   double open_error_quantile() {
     m_scratch.clear();
     for (const Triangle& t : m_triangles)
@@ -255,10 +237,8 @@ class Fast_threshold_engine {
     return t.v[0] == v || t.v[1] == v || t.v[2] == v;
   }
 
-  // The link condition of Dey et al. with the border closed by a virtual vertex (as CGAL's
-  // Euler::does_satisfy_link_condition): the neighbours shared by a and b are exactly the
-  // vertices opposite the edge, and the collapse neither empties a component nor glues two
-  // faces back to back.
+  // The link condition [Dey99], borders closed by a virtual vertex as in CGAL's
+  // Euler::does_satisfy_link_condition; also no emptied component, no faces glued back to back.
   bool satisfies_link_condition(int a, int b) {
     if (++m_stamp == 0) {  // wrapped: clear the stale marks once
       std::fill(m_mark.begin(), m_mark.end(), 0);
@@ -305,8 +285,6 @@ class Fast_threshold_engine {
     return !(a_with_both > 0 && b_with_both > 0);
   }
 
-  // The shape of triangle (p, q1, q2) of twice the area twice_area: twice_area over the squared
-  // longest edge.
   static double shape(double twice_area, const Eigen::Vector3d& p, const Eigen::Vector3d& q1,
                       const Eigen::Vector3d& q2) {
     const double longest =
@@ -314,9 +292,8 @@ class Fast_threshold_engine {
     return longest > 0 ? twice_area / longest : 0.0;
   }
 
-  // Whether moving `moved` to p turns a surviving triangle around it (those without `other`)
-  // by more than the bound, or makes it a needle or sliver (thinner than kMinimumFaceShape and
-  // than before). An input face that is already degenerate does not block its neighbours.
+  // Whether moving `moved` to p flips, or thins below kMinimumFaceShape, a triangle around it
+  // without `other`; a face already degenerate blocks nothing.
   bool turns_too_far(int moved, int other, const Eigen::Vector3d& p) const {
     const Eigen::Vector3d& old_point = m_vertices[moved].data.point;
     for (const Reference* r = references_begin(moved); r != references_end(moved); ++r) {
@@ -345,7 +322,6 @@ class Fast_threshold_engine {
     if (!satisfies_link_condition(a, b) || turns_too_far(a, b, p) || turns_too_far(b, a, p))
       return false;
 
-    // a survives at p with both quadrics; b's triangles move to a.
     Vertex& va = m_vertices[a];
     Vertex& vb = m_vertices[b];
     va.data.point = p;
@@ -378,7 +354,7 @@ class Fast_threshold_engine {
     return true;
   }
 
-  // Drops deleted triangles and rebuilds every vertex's reference list (a counting sort).
+  // Drops deleted triangles and rebuilds the reference lists (a counting sort).
   void compact() {
     m_triangles.erase(std::remove_if(m_triangles.begin(), m_triangles.end(),
                                      [](const Triangle& t) { return t.deleted; }),

@@ -1,6 +1,7 @@
-// The plane of a triangle seen from above, for the flatness argument of the Hausdorff-bounded
-// policies (docs/hausdorff.md): where the input is flat near a patch triangle, one walk over the
-// input certifies the whole triangle, which no sample grid achieves at a small tolerance.
+// Flat_frame: a triangle t's plane seen from above, for the flatness argument (docs/hausdorff.md,
+// "Flat regions"). Reference triangles within `limit` of t's plane that face its way project onto
+// it without folding; if the projection of a set K of them holds t's centroid and no edge of K not
+// shared by two of its triangles crosses t, it covers t: t is within `limit` of K.
 #ifndef CGAL_POLICIES_INTERNAL_FLAT_FRAME_H
 #define CGAL_POLICIES_INTERNAL_FLAT_FRAME_H
 
@@ -16,12 +17,6 @@
 namespace cgal_policies {
 namespace internal {
 
-// The plane of a triangle t seen from above, for the flatness argument: reference triangles that
-// lie within `limit` of t's plane and face its way project onto it without folding, and when the
-// projection of a set K of them covers t's, the point of K above any point of t is within `limit`
-// of it. The projection covers t's when it holds t's centroid and no edge of K that is not shared
-// by two triangles of K crosses the inside of t: a point of t left uncovered would be cut off from
-// the centroid by such an edge.
 class Flat_frame {
  public:
   Flat_frame(const Triangle_corners& t, double limit) : m_origin(t[0]), m_limit(limit) {
@@ -41,7 +36,7 @@ class Flat_frame {
 
   bool valid() const { return m_valid; }
 
-  // Whether q's projection may meet t's: when not, no edge of q crosses t.
+  // When false, no edge of q crosses t.
   bool may_meet(const Triangle_corners& q) const {
     Eigen::Vector2d lo = project(q[0]), hi = lo;
     for (int k = 1; k < 3; ++k) {
@@ -52,22 +47,20 @@ class Flat_frame {
     return (lo.array() <= m_max.array()).all() && (hi.array() >= m_min.array()).all();
   }
 
-  // Whether q is within `limit` of t's plane and faces its way.
   bool holds(const Triangle_corners& q) const {
     for (const Eigen::Vector3d& p : q)
       if (std::abs((p - m_origin).dot(m_n)) > m_limit) return false;
     return (q[1] - q[0]).cross(q[2] - q[0]).dot(m_n) > 0;
   }
 
-  // Whether q's projection holds t's centroid (q must face t's way).
+  // q must face t's way.
   bool holds_centroid(const Triangle_corners& q) const {
     const Eigen::Vector2d a = project(q[0]), b = project(q[1]), c = project(q[2]);
     return cross(b - a, m_centroid - a) >= 0 && cross(c - b, m_centroid - b) >= 0 &&
            cross(a - c, m_centroid - c) >= 0;
   }
 
-  // Whether the segment ab has a part of positive length inside t (in projection), clipped to t
-  // shrunk by a rounding margin.
+  // Whether ab has a part of positive length inside t (projected), t shrunk by a rounding margin.
   bool crosses(const Eigen::Vector3d& a3, const Eigen::Vector3d& b3) const {
     const Eigen::Vector2d a = project(a3), d = project(b3) - a;
     double lo = 0, hi = 1;

@@ -1,7 +1,6 @@
-// How the mesh a Hausdorff-bounded run changes is tied to the input (docs/hausdorff.md): every
-// part of the input is a piece attached to one current face that covers it within the tolerance;
-// a face where the bound is broken from the start is frozen (its vertices never move); each vertex
-// keeps its distance to a nearby input triangle, where walks toward points near it start.
+// How the mesh of a Hausdorff-bounded run is tied to the input (docs/hausdorff.md, "the pieces"):
+// input pieces attached to covering faces, frozen faces (the bound broken from the start), and each
+// vertex's distance to a nearby input triangle, where walks start.
 #ifndef CGAL_POLICIES_INTERNAL_HAUSDORFF_ATTACHMENT_H
 #define CGAL_POLICIES_INTERNAL_HAUSDORFF_ATTACHMENT_H
 
@@ -43,8 +42,7 @@ class Hausdorff_attachment {
   Reference_sample sample(vertex_descriptor v) const { return get(m_samples, v); }
   void set_sample(vertex_descriptor v, const Reference_sample& s) { put(m_samples, v, s); }
 
-  // Every face of `tm`, which is the input itself, becomes its own piece (none with `pieces`
-  // false: the local reference follows no pieces), and its vertices lie on input triangle `index`.
+  // `tm` is the input itself: each face is its own piece (none with `pieces` false: local mode).
   template <typename VertexPointMap>
   void attach_to_itself(const TriangleMesh& tm, const VertexPointMap& vpm, bool pieces) {
     m_pieces.clear();
@@ -63,9 +61,8 @@ class Hausdorff_attachment {
     }
   }
 
-  // Attaches every input face to faces of `tm`, an approximation of the input made elsewhere: each
-  // piece goes to a face around the face nearest to its centroid that covers it. A piece that none
-  // covers freezes that face (its vertices will not move), since the bound is broken there already.
+  // `tm` approximates the input: each piece goes to a covering face around the face nearest its
+  // centroid; with none, that face is frozen, since the bound is broken there already.
   template <typename VertexPointMap>
   void attach_to_approximation(const TriangleMesh& tm, const VertexPointMap& vpm,
                                const Hausdorff_input_surface& input, int max_refinement) {
@@ -109,8 +106,7 @@ class Hausdorff_attachment {
     }
   }
 
-  // After a patch changed: the pieces of its faces (`faces`, which survive, and `removed`) are
-  // those of `covers`, each over the face faces[c.triangle].
+  // After a patch changed: the pieces of `faces` and `removed` are those of `covers`.
   void reattach(const std::vector<face_descriptor>& faces,
                 const std::vector<face_descriptor>& removed,
                 const std::vector<Piece_cover>& covers) {

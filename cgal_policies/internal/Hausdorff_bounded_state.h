@@ -1,8 +1,6 @@
-// The state the Hausdorff-bounded cost, filter and move guard share (docs/hausdorff.md), as CGAL's
-// Polyhedral_envelope is the state of Polyhedral_envelope_filter: the input surface, how the
-// changing mesh is tied to it, the scan order, and the choice pending between the filter and the
-// collapse. choose() certifies a collapse, commit_collapse() applies it once CGAL collapsed the
-// edge; try_move() does both for one vertex moved by smoothing.
+// The state the Hausdorff-bounded cost, filter and move guard share (docs/hausdorff.md), as
+// Polyhedral_envelope is Polyhedral_envelope_filter's. choose() certifies a collapse,
+// commit_collapse() applies it once CGAL collapsed the edge, try_move() does both for one vertex.
 #ifndef CGAL_POLICIES_INTERNAL_HAUSDORFF_BOUNDED_STATE_H
 #define CGAL_POLICIES_INTERNAL_HAUSDORFF_BOUNDED_STATE_H
 
@@ -26,8 +24,7 @@ class Hausdorff_bounded_state {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
 
  public:
-  // `input` (its points in input_vpm) is the reference surface; `tracked` is the mesh that will
-  // change (it may be the same). The tolerance is a fraction of the input's diagonal.
+  // `input` is the reference and `tracked` the mesh that changes (it may be the same one).
   template <typename InputMesh, typename InputPointMap>
   Hausdorff_bounded_state(const InputMesh& input, const InputPointMap& input_vpm,
                           TriangleMesh& tracked, double tolerance_fraction,
@@ -45,7 +42,6 @@ class Hausdorff_bounded_state {
   double diagonal() const { return m_input.diagonal(); }
   const Storage_scan_order<TriangleMesh>& scan_order() const { return m_scan_order; }
 
-  // Before a run on `tm`, the input itself.
   template <typename VertexPointMap>
   void attach_to_itself(const TriangleMesh& tm, const VertexPointMap& vpm) {
     m_pending.drop();
@@ -53,20 +49,17 @@ class Hausdorff_bounded_state {
     m_scan_order.record(tm);
   }
 
-  // Before moves on `tm`, an approximation of the input made elsewhere (global reference).
   template <typename VertexPointMap>
   void attach_to_approximation(const TriangleMesh& tm, const VertexPointMap& vpm) {
     m_pending.drop();
     m_attachment.attach_to_approximation(tm, vpm, m_input, m_options.max_refinement);
   }
 
-  // For a filter used alone, whose collapses nobody reports: what choose() accepted is taken as
-  // collapsed when the next choice is asked for.
+  // Alone, a filter's collapses go unreported: commit a choice when the next one is asked for.
   void defer_commits() { m_deferred_commits = true; }
 
-  // The first of `candidates` (by the smallest lower bound of the two-sided distance) that is
-  // certified within the tolerance, or nothing; `acceptable(point)` refuses candidates first (flip
-  // check). The choice stays pending until commit_collapse().
+  // The best-ranked of `candidates` certified within the tolerance, after `acceptable` (the flip
+  // check); it stays pending until commit_collapse().
   template <typename Profile, typename Acceptable>
   Optional<Eigen::Vector3d> choose(const Profile& profile,
                                    const std::vector<Eigen::Vector3d>& candidates,
@@ -92,8 +85,6 @@ class Hausdorff_bounded_state {
     return {};
   }
 
-  // Once CGAL collapsed the edge of the last choice into `kept`: moves `kept` to the chosen point
-  // and attaches the pieces of the old patch to the new faces. Nothing when no choice is pending.
   template <typename VertexPointMap>
   void commit_collapse(const VertexPointMap& vpm, vertex_descriptor kept) {
     if (!m_pending.active()) return;

@@ -1,8 +1,5 @@
-// Ranking and certification of the places a Hausdorff-bounded change may move a patch's vertices
-// to (docs/hausdorff.md). Ranking is cheap and only a lower bound: the distance from the input
-// pieces' corners to the moved patch, and from the candidate to the reference. Certification is
-// conservative and two-sided: the moved patch within the tolerance of the reference on refined
-// sample grids (or over a flat part of the input), and every piece covered by one moved face.
+// Ranking and conservative two-sided certification of a Hausdorff-bounded change's candidates
+// (docs/hausdorff.md, "Conservative two-sided certification", "Ranking the candidates").
 #ifndef CGAL_POLICIES_INTERNAL_HAUSDORFF_CERTIFIER_H
 #define CGAL_POLICIES_INTERNAL_HAUSDORFF_CERTIFIER_H
 
@@ -46,8 +43,8 @@ class Hausdorff_certifier {
 
   double tolerance() const { return m_input->tolerance(); }
 
-  // The nearest point of the reference of this patch: the input, or the patch before the change.
-  // `hint` is an input triangle near p (global reference).
+  // The nearest point of the patch's reference: the input, or the patch before the change. `hint`
+  // is an input triangle near p (global reference).
   template <typename Patch>
   Reference_sample sample(const Patch& patch, const Eigen::Vector3d& p, std::size_t hint) const {
     if (m_global) return m_input->nearest(p, hint);
@@ -60,9 +57,8 @@ class Hausdorff_certifier {
     return nearest;
   }
 
-  // The candidates whose lower bound is within the tolerance and that `acceptable` lets through,
-  // the smallest bound first, at most kMaxCertified of them. hint0 and hint1 are input triangles
-  // near p0 and p1, the ends of the edge; a candidate's walk starts from the nearer one.
+  // Those within the tolerance that `acceptable` lets through, smallest bound first, at most
+  // kMaxCertified; a candidate's walk starts from the hint of the nearer end, p0 or p1.
   template <typename Patch, typename Acceptable>
   std::vector<Ranked_candidate> rank(const Patch& patch,
                                      const std::vector<Eigen::Vector3d>& candidates,
@@ -93,9 +89,6 @@ class Hausdorff_certifier {
     return ranked;
   }
 
-  // The conservative two-sided test of the patch with its moving vertices at p (at distance d_p
-  // from the reference): new patch -> reference on refined grids, reference pieces -> new patch,
-  // whose covers are appended to `covers`.
   template <typename Patch>
   bool certify(const Patch& patch, const Eigen::Vector3d& p, const Reference_sample& d_p,
                std::vector<Piece_cover>& covers) const {

@@ -1,7 +1,5 @@
-// The input surface of the Hausdorff-bounded policies (docs/hausdorff.md), the reference the output
-// is kept close to: its triangles, their neighbours across edges and an AABB tree. It answers how
-// far a point is from the input (a walk from a nearby triangle, else the tree) and whether a patch
-// triangle lies over a flat part of the input (Flat_frame).
+// The input surface of the Hausdorff-bounded policies (docs/hausdorff.md): its triangles, their
+// neighbours across edges and an AABB tree, for distance queries and the flatness argument.
 #ifndef CGAL_POLICIES_INTERNAL_HAUSDORFF_INPUT_SURFACE_H
 #define CGAL_POLICIES_INTERNAL_HAUSDORFF_INPUT_SURFACE_H
 
@@ -54,8 +52,7 @@ class Hausdorff_input_surface {
     return {p.x(), p.y(), p.z()};
   }
 
-  // The tolerance is tolerance_fraction times the diagonal of the input's bounding box. Without
-  // `indexed`, only the tolerance is known: the local reference needs no input triangles.
+  // Not `indexed` (local reference): only the tolerance, tolerance_fraction * D, is known.
   template <typename InputMesh, typename VertexPointMap>
   Hausdorff_input_surface(const InputMesh& input, const VertexPointMap& vpm,
                           double tolerance_fraction, bool indexed) {
@@ -103,11 +100,8 @@ class Hausdorff_input_surface {
   std::size_t size() const { return m_corners.size(); }
   const Triangle_corners& corners(std::size_t i) const { return m_corners[i]; }
 
-  // The distance from p to an input triangle near it, an upper bound of its distance to the input:
-  // a walk across the input's edges from the triangle `hint` while the distance drops, which is
-  // exact on most of a smooth surface; an upper bound is all the tests need. When it ends farther
-  // than the tolerance, the input point nearest to p, from the AABB tree seeded with the walk's end
-  // (or the previous answer).
+  // An upper bound of p's distance (all the tests need): a walk across input edges from `hint`
+  // while the distance drops; beyond the tolerance, the AABB tree seeded with the walk's end.
   Reference_sample nearest(const Eigen::Vector3d& p,
                            std::size_t hint = Reference_sample::kNoTriangle) const {
     const auto query = search_point(p);
@@ -139,11 +133,8 @@ class Hausdorff_input_surface {
             std::size_t(nearest.second - m_input.cbegin())};
   }
 
-  // Whether t is within the tolerance of a flat part of the input (Flat_frame). K grows from
-  // input triangles near t's corners across the input's edges, through the triangles that
-  // hold the flatness argument and whose projection may meet t's; an edge of K to a triangle that
-  // does not hold it, or to none, must not cross t. An edge to a triangle whose projection misses
-  // t's cannot.
+  // Whether t lies within the tolerance of a flat part K of the input (Flat_frame): K grows through
+  // triangles that hold the argument and may meet t; its edges to others, or to none, must miss t.
   bool flat_covers(const Sampled_triangle& t) const {
     const Flat_frame frame(t.corners, m_tolerance);
     if (!frame.valid()) return false;

@@ -1,6 +1,5 @@
 // The patch of a Hausdorff-bounded change (docs/hausdorff.md): the faces around the moving
-// vertices (both ends of a collapsed edge, or one vertex during smoothing), as they are before the
-// change, with what the moved patch must stay close to and what it must keep covering.
+// vertices before the change, what the moved patch must stay close to and must keep covering.
 #ifndef CGAL_POLICIES_INTERNAL_HAUSDORFF_PATCH_H
 #define CGAL_POLICIES_INTERNAL_HAUSDORFF_PATCH_H
 
@@ -29,8 +28,8 @@ struct Hausdorff_patch {
   std::vector<std::array<bool, 3>> moving;  // which corners of `before` move
   std::vector<std::array<Reference_sample, 3>> corner_distances;
   std::vector<Triangle_corners> reference;  // local reference: the patch before the change
-  // What the moved patch must cover: the input pieces attached to the faces (global reference),
-  // or the patch before the change (local), with the index each piece has (or kNewPiece).
+  // What the moved patch must cover: the pieces attached to the faces (global) or the patch before
+  // (local), with each piece's index (or kNewPiece).
   std::vector<Triangle_corners> pieces;
   std::vector<std::uint32_t> piece_sources;
 };
@@ -92,7 +91,6 @@ Hausdorff_patch<typename boost::graph_traits<TriangleMesh>::face_descriptor> mak
   return patch;
 }
 
-// Whether a face of the patch is frozen (Hausdorff_attachment): then nothing in it may move.
 template <typename TriangleMesh>
 bool is_frozen(
     const Hausdorff_patch<typename boost::graph_traits<TriangleMesh>::face_descriptor>& patch,
@@ -103,7 +101,6 @@ bool is_frozen(
   return false;
 }
 
-// The surviving faces of the patch with their moving corners at p.
 template <typename FaceDescriptor>
 std::vector<Triangle_corners> moved(const Hausdorff_patch<FaceDescriptor>& patch,
                                     const Eigen::Vector3d& p) {

@@ -1,7 +1,5 @@
-// The place a Hausdorff-bounded filter chose and certified for an edge that is about to collapse,
-// kept until the collapse is reported (docs/hausdorff.md, "The choose / collapse / commit
-// protocol"): the point, its distance to the reference, and how the input pieces of the old patch
-// lie over the new faces. Committing it moves the kept vertex there and attaches those pieces.
+// The choice a Hausdorff-bounded filter certified for an edge about to collapse, kept until the
+// collapse is reported (docs/hausdorff.md, "The choose / collapse / commit protocol").
 #ifndef CGAL_POLICIES_INTERNAL_HAUSDORFF_PENDING_CHOICE_H
 #define CGAL_POLICIES_INTERNAL_HAUSDORFF_PENDING_CHOICE_H
 

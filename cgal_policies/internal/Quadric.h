@@ -1,6 +1,5 @@
-// A symmetric 4x4 error quadric stored as its 10 distinct coefficients (Garland & Heckbert 1997;
-// [QEM-tutorial]). Q(x) = x~^T Q x~ with x~ = (x, y, z, 1): A = upper-left 3x3, b = last column, c
-// = corner.
+// A symmetric 4x4 error quadric as its 10 distinct coefficients ([GH97]; docs/quadric_core.md):
+// Q(x) = x~^T Q x~, A = upper-left 3x3, b = last column, c = corner.
 #ifndef CGAL_POLICIES_INTERNAL_QUADRIC_H
 #define CGAL_POLICIES_INTERNAL_QUADRIC_H
 

@@ -1,18 +1,9 @@
-// The engine every quadric policy shares (docs/quadric_core.md), in the manner of CGAL's
-// GarlandHeckbert_policy_base: per-vertex face and border quadrics in dynamic property maps, their
-// sums after a collapse, the clamp of round-off below zero, and the placement chain on
-// Q_face + Q_border. A policy derives from it (CRTP) and adds only what is new in it:
-//
-//   static constexpr bool keeps_border_planes_apart
-//       false: one quadric per vertex holds faces and borders (nothing scales the faces);
-//       true: two quadrics, so that a factor on the faces never scales the border planes.
-//   double cost_of(const Profile&, double face_error, double border_error) const
-//       the cost from the clamped errors at the placement (default: their sum).
-//   void initialize_features(const TriangleMesh&, const VertexPointMap&) const
-//   void update_features(const Profile&, vertex_descriptor kept) const
-//       what the policy keeps besides the quadrics, after the quadrics themselves (default: none).
-//
-// The derived class is the `GetCost` and `GetPlacement` CGAL expects, with `Update_tag`.
+// The engine every quadric policy shares (docs/quadric_core.md), as CGAL's
+// GarlandHeckbert_policy_base: per-vertex quadrics, their sums after a collapse, clamped errors and
+// the placement chain. A policy derives from it (CRTP) as CGAL's `GetCost` and `GetPlacement` with
+// `Update_tag`, and may override cost_of (from the clamped errors; default: their sum) and
+// initialize_features / update_features (its own state, after the quadrics'). With
+// KeepsBorderPlanesApart, border quadrics are kept apart so that a factor never scales them.
 #ifndef CGAL_POLICIES_INTERNAL_QUADRIC_POLICY_BASE_H
 #define CGAL_POLICIES_INTERNAL_QUADRIC_POLICY_BASE_H
 
@@ -101,7 +92,6 @@ class Quadric_policy_base {
     CGAL_precondition(options.border_weight >= 0);
   }
 
-  // The hooks' defaults.
   template <typename Profile>
   double cost_of(const Profile&, double face_error, double border_error) const {
     return face_error + border_error;

@@ -1,6 +1,5 @@
-// The single pass of [Liu17] over the edges in storage order (docs/hausdorff.md): each edge's
-// place in the pass, as the cost that CGAL's queue sorts by, and forgotten once the edge was tried
-// so that it is not tried again when a later collapse touches it.
+// [Liu17]'s single pass over the edges in storage order (docs/hausdorff.md): an edge's place is
+// its cost in CGAL's queue, forgotten once tried so that a later collapse does not bring it back.
 #ifndef CGAL_POLICIES_INTERNAL_STORAGE_SCAN_ORDER_H
 #define CGAL_POLICIES_INTERNAL_STORAGE_SCAN_ORDER_H
 
@@ -23,7 +22,6 @@ class Storage_scan_order {
     for (auto e : edges(tm)) put(m_order, e, order++);
   }
 
-  // The edge's place in the pass, or nothing once it was tried.
   template <typename Profile>
   Optional<double> position(const Profile& profile) const {
     const double order = get(m_order, edge(profile.v0_v1(), profile.surface_mesh()));

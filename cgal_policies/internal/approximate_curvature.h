@@ -1,7 +1,5 @@
-// The approximate curvature of Zhang, Liu and Guan (2009; [Zhang09], eq. 9-10): the mean cosine
-// between a vertex normal and the normals of its neighbours. It is 1 on a plane and falls as the
-// surface bends; the vertex normal is the normalised sum of the unit face normals (the paper's
-// "sum of the normals of the faces around it", docs/curvature.md).
+// The approximate curvature K of [Zhang09] eq. 9-10 (docs/curvature.md): the mean cosine between a
+// vertex normal and its neighbours' normals.
 #ifndef CGAL_POLICIES_INTERNAL_APPROXIMATE_CURVATURE_H
 #define CGAL_POLICIES_INTERNAL_APPROXIMATE_CURVATURE_H
 
@@ -17,15 +15,15 @@
 namespace cgal_policies {
 namespace internal {
 
-// A vertex normal as a property map stores it: value-initialised to zero, where an Eigen vector
-// would start uninitialised (and GCC rightly warns when the map copies that default).
+// Value-initialised to zero in a property map, where an Eigen vector would start uninitialised
+// (and GCC rightly warns when the map copies that default).
 using Stored_normal = std::array<double, 3>;
 
 inline Stored_normal to_stored_normal(const Eigen::Vector3d& n) { return {n.x(), n.y(), n.z()}; }
 inline Eigen::Vector3d to_vector(const Stored_normal& n) { return {n[0], n[1], n[2]}; }
 
-// K_v from the unit vertex normals in `normals` (Stored_normal values). A zero normal (a vertex
-// whose faces cancel) counts as perpendicular to everything: cosine 0. An isolated vertex gets 1.
+// A zero normal (faces that cancel) counts as perpendicular to everything: cosine 0. An isolated
+// vertex gets 1.
 template <typename TriangleMesh, typename NormalMap>
 double approximate_curvature(typename boost::graph_traits<TriangleMesh>::vertex_descriptor v,
                              const TriangleMesh& tm, const NormalMap& normals) {
@@ -41,7 +39,7 @@ double approximate_curvature(typename boost::graph_traits<TriangleMesh>::vertex_
   return sum / double(valence);
 }
 
-// The unit-sum vertex normal of eq. 10; zero for an isolated vertex.
+// The normalised sum of the unit face normals (eq. 10); zero for an isolated vertex.
 template <typename TriangleMesh, typename VertexPointMap>
 Stored_normal curvature_vertex_normal(
     typename boost::graph_traits<TriangleMesh>::vertex_descriptor v, const TriangleMesh& tm,
@@ -50,7 +48,6 @@ Stored_normal curvature_vertex_normal(
   return to_stored_normal(vertex_normal(v, tm, vpm, Normal_weighting::unit));
 }
 
-// Fills `normals` with the vertex normals and `curvatures` with K for every vertex.
 template <typename TriangleMesh, typename VertexPointMap, typename NormalMap, typename CurvatureMap>
 void compute_approximate_curvatures(const TriangleMesh& tm, const VertexPointMap& vpm,
                                     NormalMap normals, CurvatureMap curvatures) {

@@ -1,7 +1,5 @@
-// The local measures of the multi-feature fusion cost (Wang et al. 2013, [Wang13]; docs/fusion.md):
-// the side ratio zeta of an edge (the paper's eq. 9), the angle between vertex normals and the
-// normal twist along an edge (our reconstruction of the missing eqs. 4-8), and their means over the
-// neighbours of a vertex.
+// The local measures of the multi-feature fusion cost of [Wang13] (docs/fusion.md): the side ratio
+// of eq. 9, and the normal angle and twist that reconstruct the missing eqs. 4-8.
 #ifndef CGAL_POLICIES_INTERNAL_FEATURE_FUSION_MEASURES_H
 #define CGAL_POLICIES_INTERNAL_FEATURE_FUSION_MEASURES_H
 
@@ -17,8 +15,7 @@
 namespace cgal_policies {
 namespace internal {
 
-// Eq. 9: the length of h's edge over the sum of the other edges of its triangles (four inside,
-// two on a border). Zero for an edge whose triangles have no length at all.
+// Eq. 9 (four other edges inside, two on a border); zero when they have no length.
 template <typename TriangleMesh, typename VertexPointMap>
 double side_ratio(typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h,
                   const TriangleMesh& tm, const VertexPointMap& vpm) {
@@ -31,16 +28,13 @@ double side_ratio(typename boost::graph_traits<TriangleMesh>::halfedge_descripto
   return others > 0 ? length(h) / others : 0.0;
 }
 
-// The angle between two unit normals in radians, from their difference: accurate near 0, where
-// acos is not, and cheaper than atan2 (it runs for every edge whose normals changed).
+// From the normals' difference: accurate near 0, where acos is not, and cheaper than atan2.
 inline double normal_angle(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   return 2 * std::asin((std::min)(1.0, 0.5 * (b - a).norm()));
 }
 
-// The twist of the normal along the edge v -> j: the change of normal across the edge's direction,
-// (n_j - n_v) . b with b = nbar x t, t the unit edge and nbar the mean normal made perpendicular to
-// t. About the geodesic torsion times the edge length: zero along principal directions, hence along
-// every edge of a plane or a sphere, and largest at 45 degrees to them (saddles, cylinders).
+// (n_j - n_v) . (nbar x t), t the unit edge v -> j and nbar the mean normal made perpendicular to
+// t: about geodesic torsion times edge length, zero on planes and spheres (docs/fusion.md).
 inline double normal_twist(const Eigen::Vector3d& p_v, const Eigen::Vector3d& n_v,
                            const Eigen::Vector3d& p_j, const Eigen::Vector3d& n_j) {
   const Eigen::Vector3d t = unit_or_zero(p_j - p_v);
@@ -54,9 +48,7 @@ struct Normal_variation {
   double twist = 0;  // absolute normal twist
 };
 
-// The normal variation along h's edge: the angle between the normals of its ends and, when
-// `with_twist`, the absolute twist. Both are symmetric in the ends, so one value per edge serves
-// both of them. `normal` maps a vertex to its unit normal.
+// Symmetric in the ends, so one value per edge serves both; the twist only when `with_twist`.
 template <typename TriangleMesh, typename VertexPointMap, typename NormalFunction>
 Normal_variation edge_normal_variation(
     typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h, const TriangleMesh& tm,
@@ -71,16 +63,14 @@ Normal_variation edge_normal_variation(
   return variation;
 }
 
-// Sums of edge angles and twists in fixed point (units of 2^-44, about 6e-14), with their number
-// of edges. Integer sums do not depend on the order of their terms, so a sum updated term by term
-// after each collapse is exactly the sum computed afresh.
+// In fixed point (units of 2^-44) with their count of edges: integer sums do not depend on the
+// order of their terms, so a sum updated after each collapse equals the sum computed afresh.
 struct Normal_variation_sum {
   static constexpr double unit = 0x1p-44;
   std::int64_t angle = 0;
   std::int64_t twist = 0;
   std::int64_t count = 0;
 
-  // The one term of an edge.
   static Normal_variation_sum of(const Normal_variation& variation) {
     return {std::llround(variation.angle / unit), std::llround(variation.twist / unit), 1};
   }
@@ -100,8 +90,6 @@ struct Normal_variation_sum {
   double mean_twist() const { return count > 0 ? double(twist) * unit / double(count) : 0.0; }
 };
 
-// The sum over the edges around v whose means are thbar(v) and T(v). `edge_term` maps a halfedge to
-// the Normal_variation_sum::of its edge.
 template <typename TriangleMesh, typename EdgeTerm>
 Normal_variation_sum normal_variation_sum(
     typename boost::graph_traits<TriangleMesh>::vertex_descriptor v, const TriangleMesh& tm,
@@ -111,7 +99,6 @@ Normal_variation_sum normal_variation_sum(
   return sum;
 }
 
-// L0: the mean edge length of the mesh; zero for a mesh without edges.
 template <typename TriangleMesh, typename VertexPointMap>
 double mean_edge_length(const TriangleMesh& tm, const VertexPointMap& vpm) {
   double sum = 0;

@@ -38,7 +38,6 @@ Border_case border_case(const Profile& profile, Border_rule rule) {
   return Border_case::free;
 }
 
-// The placement a border case leaves of `preferred` (the quadric optimum, say), or nothing.
 template <typename Profile>
 Optional<Eigen::Vector3d> restrict_to_border_case(const Profile& profile, Border_case c,
                                                   const Eigen::Vector3d& preferred) {
@@ -62,8 +61,7 @@ Optional<Eigen::Vector3d> restrict_to_border_case(const Profile& profile, Border
   return {};
 }
 
-// The restricted preferred point first, then the K + 1 points p0 + i/K (p1 - p0) where the border
-// case lets the vertex move along the edge.
+// The restricted preferred point, then K + 1 points along the edge where the border case allows.
 template <typename Profile>
 std::vector<Eigen::Vector3d> collapse_candidates(const Profile& profile, Border_case c,
                                                  const Eigen::Vector3d& preferred, int steps) {

@@ -21,13 +21,12 @@ Point to_point(const Eigen::Vector3d& p) {
   return Point(p.x(), p.y(), p.z());
 }
 
-// The direction of (b - a) x (c - a); its length is twice the triangle's area.
+// Its length is twice the triangle's area.
 inline Eigen::Vector3d triangle_area_normal(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                             const Eigen::Vector3d& c) {
   return (b - a).cross(c - a);
 }
 
-// The unit vector along v, or zero when v has no direction.
 inline Eigen::Vector3d unit_or_zero(const Eigen::Vector3d& v) {
   const double length = v.norm();
   return length > 0 ? Eigen::Vector3d(v / length) : Eigen::Vector3d::Zero();
@@ -43,7 +42,6 @@ Eigen::Vector3d face_area_normal(typename boost::graph_traits<TriangleMesh>::fac
 
 enum class Normal_weighting { unit, area };
 
-// The normalised sum of the normals of the faces around v (unit or area weighted).
 template <typename TriangleMesh, typename VertexPointMap>
 Eigen::Vector3d vertex_normal(typename boost::graph_traits<TriangleMesh>::vertex_descriptor v,
                               const TriangleMesh& tm, const VertexPointMap& vpm,

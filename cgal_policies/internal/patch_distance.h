@@ -1,9 +1,5 @@
-// Conservative sampled distance tests between a small patch and the reference, for the
-// Hausdorff-bounded policies (docs/hausdorff.md). A triangle is within `limit` of a reference
-// surface when the distance at the corners of a barycentric sample grid plus the grid's covering
-// radius stays below `limit` (the distance to a set is 1-Lipschitz); the grid is refined
-// (n = 1, 2, 4, ...) only where the bound is not met. The reference pieces' corners give a cheap
-// lower bound the other way, to rank candidates before the full test.
+// Conservative sampled distance tests from a patch to the reference, and a cheap lower bound the
+// other way (docs/hausdorff.md, "New patch to reference", "Ranking the candidates").
 #ifndef CGAL_POLICIES_INTERNAL_PATCH_DISTANCE_H
 #define CGAL_POLICIES_INTERNAL_PATCH_DISTANCE_H
 
@@ -22,20 +18,14 @@
 namespace cgal_policies {
 namespace internal {
 
-// A triangle of a patch with the reference samples at its corners.
 struct Sampled_triangle {
   Triangle_corners corners;
   std::array<Reference_sample, 3> samples;
 };
 
-// True when every point of the triangles is provably within `limit` of the reference: a triangle
-// passes when its farthest corner plus its covering radius stays within (the distance is
-// 1-Lipschitz), or when one reference triangle is within `limit` of all three corners (the
-// distance to a triangle is convex); the others are split in four, `sample(x, hint)` giving the new
-// corners, at most `depth` times and for at most `budget` samples in all; a triangle of any level
-// may also pass `flat(triangle)`. The grid is refined level by level, so a point farther than
-// `limit` refuses early (exact); running out of levels or samples refuses too (conservative).
-// `reference(t)` gives reference triangle t.
+// True when every point of the triangles is provably within `limit` of the reference (the tests:
+// docs/hausdorff.md); a triangle that fails is split in four, at most `depth` times and for
+// `budget` samples in all. A sample beyond `limit`, or running out, refuses.
 template <typename Sample, typename Reference, typename Flat>
 bool triangles_within(std::vector<Sampled_triangle> level, double limit, int depth,
                       std::size_t budget, const Sample& sample, const Reference& reference,
@@ -80,9 +70,8 @@ bool triangles_within(std::vector<Sampled_triangle> level, double limit, int dep
   return true;
 }
 
-// The largest distance from a corner of the pieces (at most about `budget` of them, evenly spread)
-// to the patch: a lower bound of the one-sided Hausdorff distance, returned early once it reaches
-// `stop`.
+// A lower bound of the one-sided Hausdorff distance from the pieces to the patch, on the corners
+// of about `budget` pieces evenly spread; returned early once it reaches `stop`.
 inline double corner_distance_lower_bound(const std::vector<Triangle_corners>& pieces,
                                           const std::vector<Triangle_corners>& patch, double stop,
                                           std::size_t budget) {

@@ -1,8 +1,5 @@
-// Covering a piece of the reference by single triangles of a patch, for the Hausdorff-bounded
-// policies (docs/hausdorff.md). A piece is within `limit` of one triangle T when its three corners
-// are: the distance to a convex set is convex, so its maximum over the piece is at a corner. A
-// piece that no single triangle covers is split in four and retried; failing that, it is cut
-// exactly along the edges of the new fan (which halving never achieves where the two are coplanar).
+// Covering a piece of the reference by single triangles of a patch (docs/hausdorff.md, "the
+// pieces"): a piece is within `limit` of a triangle when its corners are (convexity).
 #ifndef CGAL_POLICIES_INTERNAL_PIECE_COVER_H
 #define CGAL_POLICIES_INTERNAL_PIECE_COVER_H
 
@@ -20,7 +17,6 @@
 namespace cgal_policies {
 namespace internal {
 
-// A piece of a reference triangle and the triangle of a patch that covers it.
 struct Piece_cover {
   Triangle_corners piece;
   std::uint32_t source;  // the index the piece had before, or kNewPiece when it was split
@@ -28,8 +24,8 @@ struct Piece_cover {
 };
 constexpr std::uint32_t kNewPiece = 0xffffffffu;
 
-// Appends to `covers` how the piece is covered by single triangles of `patch` within `limit`,
-// splitting it at most `depth` times; false when that fails. `hint` is the triangle tried first.
+// Appends how the piece is covered by single triangles of `patch`, splitting it in four at most
+// `depth` times; false when that fails. `hint` is the triangle tried first.
 inline bool cover_piece(const Triangle_corners& piece, std::uint32_t source,
                         const std::vector<Triangle_corners>& patch, double limit, int depth,
                         std::size_t& hint, std::vector<Piece_cover>& covers) {
@@ -54,12 +50,9 @@ inline bool cover_piece(const Triangle_corners& piece, std::uint32_t source,
   return true;
 }
 
-// Cuts the piece along the edges of `fan`, triangles around `apex`, seen along the piece's normal,
-// and appends the parts with the triangle each lies over, when every part is within `limit` of its
-// triangle (all of it then is, by convexity). The parts tile the piece when the triangles all face
-// the piece's way, turn at most once around the apex (so they do not overlap) and their areas add
-// up to the piece's, up to round-off; otherwise false, with nothing appended. Exact where a piece
-// and the fan are coplanar, which halving (cover_piece) only approaches.
+// Cuts the piece along the edges of `fan` (around `apex`, seen along the piece's normal) into parts
+// each within `limit` of its triangle; exact where halving only approaches (coplanar piece and
+// fan). False, with nothing appended, unless the parts tile the piece.
 inline bool cover_piece_along_fan(const Triangle_corners& piece,
                                   const std::vector<Triangle_corners>& fan,
                                   const Eigen::Vector3d& apex, double limit,

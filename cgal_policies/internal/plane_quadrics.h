@@ -11,7 +11,6 @@
 namespace cgal_policies {
 namespace internal {
 
-// The plane of face f, weighted by 1 or by the face's area; a degenerate face gives zero.
 template <typename TriangleMesh, typename VertexPointMap>
 Quadric face_plane_quadric(typename boost::graph_traits<TriangleMesh>::face_descriptor f,
                            const TriangleMesh& tm, const VertexPointMap& vpm,
@@ -25,8 +24,8 @@ Quadric face_plane_quadric(typename boost::graph_traits<TriangleMesh>::face_desc
   return Quadric::from_plane(n, -n.dot(p), weight);
 }
 
-// The plane through the edge of h that stands perpendicular to h's face, so that moving a border
-// vertex off its border line costs border_weight per squared unit (times |e|^2 with area weights).
+// Perpendicular to h's face through h's edge: moving a border vertex off its border line costs
+// border_weight per squared unit (times |e|^2 with area weights).
 template <typename TriangleMesh, typename VertexPointMap>
 Quadric border_plane_quadric(typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h,
                              const TriangleMesh& tm, const VertexPointMap& vpm,
@@ -40,8 +39,8 @@ Quadric border_plane_quadric(typename boost::graph_traits<TriangleMesh>::halfedg
   return Quadric::from_plane(n, -n.dot(a), weight);
 }
 
-// Fills face_map with the sum of the face planes around each vertex and border_map with the sum of
-// its border planes. Passing the same map twice stores the plain sum.
+// Sums the face planes around each vertex into face_map and its border planes into border_map;
+// the same map twice stores the plain sum.
 template <typename TriangleMesh, typename VertexPointMap, typename FaceQuadricMap,
           typename BorderQuadricMap>
 void accumulate_vertex_quadrics(const TriangleMesh& tm, const VertexPointMap& vpm,

@@ -1,6 +1,5 @@
-// The placement chain of the QEM tutorial ([QEM-tutorial]; docs/quadric_core.md): the quadric's
-// minimiser when it is well defined, else the best point of the edge, else the best of its ends and
-// midpoint.
+// The placement chain of [QEM-tutorial] (docs/quadric_core.md): the quadric's minimiser when well
+// defined, else the best point of the edge, else the best of its ends and midpoint.
 #ifndef CGAL_POLICIES_INTERNAL_QUADRIC_PLACEMENT_H
 #define CGAL_POLICIES_INTERNAL_QUADRIC_PLACEMENT_H
 
@@ -35,10 +34,8 @@ inline double squared_distance_to_segment(const Eigen::Vector3d& x, const Eigen:
   return (x - (p0 + t * d)).squaredNorm();
 }
 
-// Whether the smallest eigenvalue of the positive semi-definite matrix a exceeds
-// kMinimumConditioning times its largest. Since smallest >= det / largest^2 and largest <= trace,
-// det / trace^3 above the bound settles it without an eigen-decomposition, which only the nearly
-// singular quadrics of flat or straight regions need.
+// a is PSD, so lambda_min >= det / lambda_max^2 and lambda_max <= trace: det / trace^3 above the
+// bound settles it without the eigen solver, which only near-singular (flat) quadrics need.
 inline bool is_well_conditioned(const Eigen::Matrix3d& a) {
   const double trace = a.trace();
   if (!(trace > 0)) return false;

@@ -1,6 +1,4 @@
-// Distances between points and triangles in double precision, for the Hausdorff-bounded policies
-// (docs/hausdorff.md): the exact distance to a triangle, the covering radius of a triangle by its
-// corners, and a point's distance to one triangle of the reference.
+// Point-triangle distances in double precision, for the Hausdorff checks (docs/hausdorff.md).
 #ifndef CGAL_POLICIES_INTERNAL_TRIANGLE_DISTANCE_H
 #define CGAL_POLICIES_INTERNAL_TRIANGLE_DISTANCE_H
 
@@ -19,8 +17,6 @@ namespace internal {
 
 using Triangle_corners = std::array<Eigen::Vector3d, 3>;
 
-// Squared distance from p to the triangle (a, b, c), through the Voronoi regions of its corners,
-// edges and face; a degenerate triangle falls back to its three edges.
 inline double squared_distance_to_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
                                            const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
   const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
@@ -50,7 +46,7 @@ inline double squared_distance_to_triangle(const Eigen::Vector3d& p, const Trian
 }
 
 // The largest distance from a point of the triangle to its nearest corner: the circumradius when
-// the triangle is acute (the circumcentre is inside), else at most half the longest edge.
+// the triangle is acute, else at most half the longest edge.
 inline double covering_radius(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                               const Eigen::Vector3d& c) {
   std::array<double, 3> e2 = {(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()};
