@@ -1,32 +1,39 @@
-// Hausdorff_bounded_policies, its cost, placement and filter (docs/hausdorff.md): exact cases on
-// tiny meshes, and the global-mode guarantee on real meshes, checked by mesh_error's measure.
-#include "common/edge_collapse_runner.h"
-#include "common/mesh_measures.h"
+// Hausdorff_bounded_policies, its cost, placement and filter, Hausdorff_bounded_filter and
+// Laplacian_smoother (docs/hausdorff.md, [Liu17] §2.4), with the library alone: exact cases on tiny
+// meshes, the filter used alone around another policy, and the choose / collapse / commit protocol
+// Hausdorff_bounded_policies relies on, recorded call by call so that a CGAL upgrade that changes
+// it fails here. The bounds checked by mesh_error's measure are in hausdorff_bound_test.cpp.
 #include "test_meshes.h"
 
-#include "common/mesh_io.h"
-
+#include <cgal_policies/Hausdorff_bounded_filter.h>
 #include <cgal_policies/Hausdorff_bounded_policies.h>
-#include <cgal_policies/Hausdorff_move_guard.h>
 #include <cgal_policies/Laplacian_smoother.h>
 #include <cgal_policies/internal/piece_cover.h>
 #include <cgal_policies/internal/triangle_distance.h>
 
-#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Edge_profile.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Surface_mesh_simplification/Edge_collapse_visitor_base.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Count_stop_predicate.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Midpoint_placement.h>
+#include <CGAL/Surface_mesh_simplification/edge_collapse.h>
+#include <CGAL/subdivision_method_3.h>
 
 #include <gtest/gtest.h>
 
-#include <string>
+#include <cmath>
+#include <map>
+#include <utility>
 #include <vector>
 
 namespace {
 
 namespace SMS = CGAL::Surface_mesh_simplification;
-using apps::Kernel;
-using apps::Mesh;
-using apps::Point;
+using test_meshes::Kernel;
+using test_meshes::Mesh;
+using test_meshes::Point;
+using Vertex = Mesh::Vertex_index;
 using Policies = cgal_policies::Hausdorff_bounded_policies<Mesh, Kernel>;
-using Profile = SMS::Edge_profile<Mesh>;
+using Alone_filter = cgal_policies::Hausdorff_bounded_filter<Mesh, Kernel>;
 
 cgal_policies::Hausdorff_bounded_options options_with(double beta) {
   cgal_policies::Hausdorff_bounded_options options;
@@ -36,31 +43,12 @@ cgal_policies::Hausdorff_bounded_options options_with(double beta) {
 
 // Asks the policy's filter, as edge_collapse would when it pops the edge of h.
 bool collapse_accepted(Mesh& mesh, const Policies& policy, Mesh::Halfedge_index h) {
-  const Kernel traits;
-  const Profile profile(h, mesh, traits, get(CGAL::vertex_index, mesh),
-                        get(CGAL::vertex_point, mesh), get(CGAL::halfedge_index, mesh), true);
+  const test_meshes::Profile profile = test_meshes::edge_profile(mesh, h);
   return bool(policy.get_filter()(profile, policy.get_placement()(profile)));
 }
 
 void start(Mesh& mesh, const Policies& policy) {
   policy.get_cost().initialize(mesh, get(CGAL::vertex_point, mesh), Kernel());
-}
-
-Mesh::Halfedge_index halfedge_between(const Mesh& mesh, int a, int b) {
-  const auto h = CGAL::halfedge(Mesh::Vertex_index(a), Mesh::Vertex_index(b), mesh);
-  EXPECT_TRUE(h.second);
-  return h.first;
-}
-
-// The 4 x 4 flat grid with a ridge: the vertices of the middle column x = 2 are raised by
-// `height`. Vertex (i, j) has index 5 j + i.
-Mesh ridge_grid(double height) {
-  Mesh mesh = test_meshes::flat_grid(4);
-  for (auto v : vertices(mesh)) {
-    const Point& p = mesh.point(v);
-    if (p.x() == 2) mesh.point(v) = Point(p.x(), p.y(), height);
-  }
-  return mesh;
 }
 
 void expect_every_interior_collapse_accepted(double beta) {
@@ -136,99 +124,279 @@ TEST(HausdorffBoundedPolicies, BentGridRefusesTheCollapseAcrossTheBendBelowItsHe
   // takes, the bend is cut or the flat part is lifted by a good part of the height.
   const double height = 0.5;
   for (const double tolerance : {0.1 * height, 2 * height}) {
-    Mesh mesh = ridge_grid(height);
-    const double diagonal = apps::bbox_diagonal(mesh);
+    Mesh mesh = test_meshes::bent_grid(4, height);
+    const double diagonal = test_meshes::bbox_diagonal(mesh);
     const Policies policy(mesh, options_with(tolerance / diagonal));
     start(mesh, policy);
-    const bool accepted = collapse_accepted(mesh, policy, halfedge_between(mesh, 11, 12));
+    const bool accepted = collapse_accepted(
+        mesh, policy, test_meshes::halfedge_between(mesh, Point(1, 2, 0), Point(2, 2, height)));
     EXPECT_EQ(accepted, tolerance > height) << "tolerance " << tolerance;
   }
 }
 
 TEST(HausdorffBoundedPolicies, LockedBordersRefuseBorderEdges) {
   Mesh mesh = test_meshes::flat_grid(4);
+  const Mesh::Halfedge_index border_edge =
+      test_meshes::halfedge_between(mesh, Point(1, 0, 0), Point(2, 0, 0));
   cgal_policies::Hausdorff_bounded_options options = options_with(0.5);
   const Policies sliding(mesh, options);
   start(mesh, sliding);
-  EXPECT_TRUE(collapse_accepted(mesh, sliding, halfedge_between(mesh, 1, 2)));
+  EXPECT_TRUE(collapse_accepted(mesh, sliding, border_edge));
   options.border = cgal_policies::Border_rule::lock;
   const Policies locked(mesh, options);
   start(mesh, locked);
-  EXPECT_FALSE(collapse_accepted(mesh, locked, halfedge_between(mesh, 1, 2)));
+  EXPECT_FALSE(collapse_accepted(mesh, locked, border_edge));
 }
 
-// A finely sampled cylinder arc: collapses in local mode each stay within the tolerance of the
-// patch they replace, but successive ones drift away from the original surface.
-Mesh cylinder_band(int segments) {
-  std::vector<Point> points;
-  std::vector<std::array<int, 3>> triangles;
-  for (int i = 0; i <= segments; ++i) {
-    const double angle = 0.5 * M_PI * i / segments;
-    points.emplace_back(std::cos(angle), std::sin(angle), 0);
-    points.emplace_back(std::cos(angle), std::sin(angle), 0.05);
+// Hausdorff_bounded_filter alone. What it answers, as edge_collapse would ask when it pops the edge
+// from a to b.
+bool alone_accepts(Mesh& mesh, const Alone_filter& filter, const Point& a, const Point& b) {
+  const test_meshes::Profile profile =
+      test_meshes::edge_profile(mesh, test_meshes::halfedge_between(mesh, a, b));
+  return bool(filter(profile, SMS::Midpoint_placement<Mesh>()(profile)));
+}
+
+TEST(HausdorffBoundedFilterAlone, RefusesACollapseThatLeavesTheBound) {
+  const double height = 0.5;
+  Mesh mesh = test_meshes::bent_grid(4, height);
+  const double diagonal = test_meshes::bbox_diagonal(mesh);
+  // The midpoint of the edge from the bend at x = 1 up to the ridge lowers the ridge by height/2.
+  const Alone_filter tight(mesh, 0.1 * height / diagonal);
+  EXPECT_FALSE(alone_accepts(mesh, tight, Point(1, 2, 0), Point(2, 2, height)));
+  const Alone_filter loose(mesh, 2 * height / diagonal);
+  EXPECT_TRUE(alone_accepts(mesh, loose, Point(1, 2, 0), Point(2, 2, height)));
+}
+
+TEST(HausdorffBoundedFilterAlone, AcceptsACollapseThatStaysWithinTheBound) {
+  const double height = 0.5;
+  Mesh mesh = test_meshes::bent_grid(4, height);
+  // Along the bend at x = 1 the merged vertex stays on the bend: the surface does not change.
+  const Alone_filter filter(mesh, 1e-3 * height / test_meshes::bbox_diagonal(mesh));
+  EXPECT_TRUE(alone_accepts(mesh, filter, Point(1, 1, 0), Point(1, 2, 0)));
+}
+
+// The protocol, recorded. Every call to the three policies and every collapse is an event.
+enum class Call { placement, filter, collapsed, update_after_collapse };
+
+// in, out: for the placement, -, its point; for the filter, the placement, its point; for
+// update_after_collapse, the kept vertex's point before and after.
+struct Event {
+  Call call;
+  std::pair<Vertex, Vertex> edge;  // the profile's v0, v1, smaller first
+  Point in, out;
+  bool accepted = false;  // the placement or the filter returned a point
+  Vertex kept = Vertex();
+};
+using Log = std::vector<Event>;
+
+const Point kNoPoint(0, 0, 0);
+
+template <typename Profile>
+std::pair<Vertex, Vertex> edge_of(const Profile& profile) {
+  const Vertex a = profile.v0(), b = profile.v1();
+  return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
+}
+
+template <typename Placement>
+struct Recording_placement {
+  Placement inner;
+  Log* log;
+  template <typename Profile>
+  auto operator()(const Profile& profile) const {
+    const auto p = inner(profile);
+    log->push_back({Call::placement, edge_of(profile), kNoPoint, p ? *p : kNoPoint, bool(p)});
+    return p;
   }
-  for (int i = 0; i < segments; ++i) {
-    triangles.push_back({2 * i, 2 * i + 2, 2 * i + 3});
-    triangles.push_back({2 * i, 2 * i + 3, 2 * i + 1});
+};
+
+template <typename Filter>
+struct Recording_filter {
+  Filter inner;
+  Log* log;
+  template <typename Profile, typename Placement>
+  Placement operator()(const Profile& profile, const Placement& placement) const {
+    const Placement chosen = inner(profile, placement);
+    log->push_back({Call::filter, edge_of(profile), placement ? *placement : kNoPoint,
+                    chosen ? *chosen : kNoPoint, bool(chosen)});
+    return chosen;
   }
-  return test_meshes::from_triangles(points, triangles);
+};
+
+template <typename Cost>
+struct Recording_cost {
+  using Update_tag = CGAL::Tag_true;
+  Cost inner;
+  Log* log;
+  template <typename VertexPointMap>
+  void initialize(const Mesh& mesh, const VertexPointMap& vpm, const Kernel& traits) const {
+    inner.initialize(mesh, vpm, traits);
+  }
+  template <typename Profile>
+  void update_after_collapse(const Profile& profile, Vertex kept) const {
+    const Point before = get(profile.vertex_point_map(), kept);
+    inner.update_after_collapse(profile, kept);
+    log->push_back({Call::update_after_collapse, edge_of(profile), before,
+                    get(profile.vertex_point_map(), kept), false, kept});
+  }
+  template <typename Profile, typename Placement>
+  auto operator()(const Profile& profile, const Placement& placement) const {
+    return inner(profile, placement);
+  }
+};
+
+struct Recording_visitor : SMS::Edge_collapse_visitor_base<Mesh> {
+  Log* log;
+  explicit Recording_visitor(Log* l) : log(l) {}
+  template <typename Profile>
+  void OnCollapsed(const Profile& profile, Vertex kept) {
+    log->push_back({Call::collapsed, edge_of(profile), kNoPoint, kNoPoint, false, kept});
+  }
+};
+
+// A sphere of 320 faces, simplified toward 40 as far as 1% of its diagonal allows.
+Log record_a_run(Mesh& mesh) {
+  mesh = test_meshes::icosahedron();
+  CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(2));
+  cgal_policies::Hausdorff_bounded_options options;
+  options.beta = 0.01;
+  const Policies policies(mesh, options);
+  Log log;
+  SMS::edge_collapse(
+      mesh, SMS::Count_stop_predicate<Mesh>(60),
+      CGAL::parameters::get_cost(Recording_cost<Policies::Get_cost>{policies.get_cost(), &log})
+          .get_placement(
+              Recording_placement<Policies::Get_placement>{policies.get_placement(), &log})
+          .filter(Recording_filter<Policies::Filter>{policies.get_filter(), &log})
+          .visitor(Recording_visitor(&log)));
+  return log;
 }
 
-apps::Mesh_error simplify_band(cgal_policies::Hausdorff_reference reference, double beta) {
-  Mesh mesh = cylinder_band(64);
-  const Mesh original = mesh;
-  cgal_policies::Hausdorff_bounded_options options = options_with(beta);
-  options.reference = reference;
-  const Policies policy(mesh, options);
-  apps::Simplify_settings settings;
-  settings.target_faces = 2;
-  apps::run_edge_collapse(mesh, settings, policy.get_cost(), policy.get_placement(),
-                          policy.get_filter());
-  mesh.collect_garbage();
-  return apps::measure_mesh_error(original, mesh, 20000);
-}
-
-TEST(HausdorffBoundedPolicies, LocalModeAccumulatesWhileGlobalModeKeepsTheBound) {
-  const double beta = 0.01;
-  const apps::Mesh_error local = simplify_band(cgal_policies::Hausdorff_reference::local, beta);
-  const apps::Mesh_error global = simplify_band(cgal_policies::Hausdorff_reference::global, beta);
-  EXPECT_GT(local.hausdorff, beta * local.bbox_diagonal);
-  EXPECT_LE(global.hausdorff, beta * global.bbox_diagonal);
-}
-
-// The guarantee: in global mode, mesh_error's two-sided Hausdorff distance never exceeds the
-// tolerance, smoothing off and bounded smoothing on. (The registry's "hausdorff" entry runs the
-// same classes; property_test checks it like every policy.)
-TEST(HausdorffBoundedPolicies, GlobalModeKeepsTheTwoSidedBoundOnRealMeshes) {
-  SKIP_IF_REAL_MESHES_ARE_OFF();
-  for (const std::string name : {"bunny.obj", "fandisk.obj", "teapot.obj", "rocker-arm.obj"}) {
-    const Mesh original = apps::read_triangle_mesh(test_meshes::data_file(name));
-    for (const double tolerance : {0.001, 0.005, 0.01}) {
-      for (const bool smooth : {false, true}) {
-        Mesh mesh = original;
-        {
-          const Policies policy(mesh, options_with(tolerance));
-          // Down to 5% of the faces, or as far as the tolerance allows: far enough that the
-          // tighter tolerances stop the run, and short enough for a test.
-          apps::Simplify_settings settings;
-          settings.target_faces = original.number_of_faces() / 20;
-          apps::run_edge_collapse(mesh, settings, policy.get_cost(), policy.get_placement(),
-                                  policy.get_filter());
-        }
-        mesh.collect_garbage();
-        if (smooth) {
-          const cgal_policies::Hausdorff_move_guard<Mesh> guard(original, mesh, tolerance);
-          cgal_policies::Laplacian_smoother<Mesh>().smooth(mesh, 3, guard);
-        }
-        const apps::Mesh_error error = apps::measure_mesh_error(original, mesh);
-        EXPECT_LE(error.hausdorff, tolerance * error.bbox_diagonal)
-            << name << " tolerance " << tolerance << (smooth ? " smoothed" : "") << ": "
-            << mesh.number_of_faces() << " faces, Hausdorff "
-            << error.hausdorff / error.bbox_diagonal;
-        EXPECT_LT(mesh.number_of_faces(), original.number_of_faces());
-      }
+TEST(HausdorffBoundedProtocol, CgalCollapsesWhatTheFilterAcceptedThenUpdatesTheCost) {
+  Mesh mesh;
+  const Log log = record_a_run(mesh);
+  std::size_t collapses = 0, moved_by_the_filter = 0;
+  for (std::size_t i = 0; i < log.size(); ++i) {
+    const Event& e = log[i];
+    if (e.call == Call::filter && e.accepted) {
+      // Accepted: collapsed at once, nothing in between.
+      ASSERT_LT(i + 1, log.size());
+      EXPECT_EQ(log[i + 1].call, Call::collapsed) << "event " << i;
+      EXPECT_EQ(log[i + 1].edge, e.edge) << "event " << i;
     }
+    if (e.call != Call::collapsed) continue;
+    ++collapses;
+    // Preceded by the filter's acceptance of the same edge, which got the placement's point.
+    ASSERT_GT(i, 1u);
+    const Event& filter = log[i - 1];
+    ASSERT_EQ(filter.call, Call::filter) << "event " << i;
+    EXPECT_TRUE(filter.accepted);
+    EXPECT_EQ(filter.edge, e.edge);
+    const Event& placement = log[i - 2];
+    ASSERT_EQ(placement.call, Call::placement) << "event " << i;
+    EXPECT_EQ(placement.edge, e.edge);
+    EXPECT_EQ(placement.out, filter.in);
+    // Followed by update_after_collapse for that edge before any other filter call or collapse:
+    // the vertex is then at the placement's point, and moved to the filter's.
+    std::size_t j = i + 1;
+    while (j < log.size() && log[j].call == Call::placement) ++j;
+    ASSERT_LT(j, log.size());
+    const Event& update = log[j];
+    ASSERT_EQ(update.call, Call::update_after_collapse) << "event " << j;
+    EXPECT_EQ(update.edge, e.edge);
+    EXPECT_EQ(update.kept, e.kept);
+    EXPECT_EQ(update.in, filter.in) << "collapsed to the placement's point";
+    EXPECT_EQ(update.out, filter.out) << "moved to the filter's point";
+    moved_by_the_filter += filter.out != filter.in;
   }
+  EXPECT_GT(collapses, 50u);
+  EXPECT_GT(moved_by_the_filter, 0u);  // the test has teeth: the two points differ
+}
+
+TEST(HausdorffBoundedProtocol, EverySurvivingKeptVertexSitsWhereTheFilterChose) {
+  Mesh mesh;
+  const Log log = record_a_run(mesh);
+  std::map<Vertex, Point> chosen;  // the kept vertices still alive, and their last choice
+  const Point* last_choice = nullptr;
+  for (const Event& e : log) {
+    if (e.call == Call::filter) last_choice = e.accepted ? &e.out : nullptr;
+    if (e.call != Call::collapsed) continue;
+    ASSERT_NE(last_choice, nullptr);
+    const Vertex removed = e.kept == e.edge.first ? e.edge.second : e.edge.first;
+    chosen.erase(removed);
+    chosen[e.kept] = *last_choice;
+  }
+  ASSERT_FALSE(chosen.empty());
+  for (const auto& [v, p] : chosen) {
+    ASSERT_FALSE(mesh.is_removed(v));
+    EXPECT_EQ(mesh.point(v), p) << "vertex " << v;
+  }
+}
+
+// Laplacian_smoother ([Liu17] §2.4). A square fan around the centre 0 at (0.2, 0, 0), its ring
+// 1 2 3 4 at distance 1 from the origin:
+//        2
+//      / | `
+//    3 - 0 - 1
+//      ` | /
+//        4
+Mesh fan() {
+  return test_meshes::from_triangles(
+      {Point(0.2, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(-1, 0, 0), Point(0, -1, 0)},
+      {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 1}});
+}
+
+using cgal_policies::Laplacian_smoother;
+using cgal_policies::Smoothing_method;
+using cgal_policies::Smoothing_weights;
+
+TEST(LaplacianSmoother, MovesTheCentreTowardsTheUniformMean) {
+  Mesh mesh = fan();
+  Laplacian_smoother<Mesh>(0.5).smooth(mesh, 1);
+  // Mean of the ring: the origin; P + 0.5 (U - P) = (0.1, 0, 0).
+  EXPECT_DOUBLE_EQ(mesh.point(Mesh::Vertex_index(0)).x(), 0.1);
+  EXPECT_DOUBLE_EQ(mesh.point(Mesh::Vertex_index(0)).y(), 0.0);
+}
+
+TEST(LaplacianSmoother, InverseDistanceWeightsFavourNearNeighbours) {
+  Mesh mesh = fan();
+  Laplacian_smoother<Mesh>(1.0, Smoothing_weights::inverse_distance).smooth(mesh, 1);
+  // Eq. 8: U = sum(w_i p_i) / sum(w_i), w_i = 1 / |P - p_i|.
+  const double w1 = 1 / 0.8, w3 = 1 / 1.2, w24 = 1 / std::sqrt(0.04 + 1);
+  const double expected_x = (w1 * 1 - w3 * 1) / (w1 + w3 + 2 * w24);
+  EXPECT_NEAR(mesh.point(Mesh::Vertex_index(0)).x(), expected_x, 1e-12);
+  EXPECT_GT(expected_x, 0.0);  // pulled towards the near neighbour 1
+}
+
+TEST(LaplacianSmoother, BorderVerticesDoNotMove) {
+  for (const Smoothing_method method : {Smoothing_method::laplacian, Smoothing_method::taubin}) {
+    Mesh mesh = test_meshes::flat_grid(4);
+    for (auto v : vertices(mesh))
+      if (!CGAL::is_border(v, mesh))
+        mesh.point(v) = Point(mesh.point(v).x(), mesh.point(v).y(), 0.3);
+    const Mesh before = mesh;
+    Laplacian_smoother<Mesh>(0.5, Smoothing_weights::uniform, method).smooth(mesh, 20);
+    int moved_interior = 0;
+    for (auto v : vertices(mesh)) {
+      if (CGAL::is_border(v, mesh))
+        EXPECT_EQ(mesh.point(v), before.point(v));
+      else
+        moved_interior += mesh.point(v) != before.point(v);
+    }
+    EXPECT_EQ(moved_interior, 9);
+  }
+}
+
+TEST(LaplacianSmoother, TaubinShrinksAClosedSphereLessThanLaplacian) {
+  const Mesh original = test_meshes::loop_sphere(3);
+  const double volume = CGAL::Polygon_mesh_processing::volume(original);
+  Mesh laplacian = original, taubin = original;
+  Laplacian_smoother<Mesh>(0.5).smooth(laplacian, 50);
+  Laplacian_smoother<Mesh>(0.5, Smoothing_weights::uniform, Smoothing_method::taubin)
+      .smooth(taubin, 50);
+  const double laplacian_loss = 1 - CGAL::Polygon_mesh_processing::volume(laplacian) / volume;
+  const double taubin_loss = 1 - CGAL::Polygon_mesh_processing::volume(taubin) / volume;
+  EXPECT_GT(laplacian_loss, 0.0);
+  EXPECT_GT(laplacian_loss, std::abs(taubin_loss));
 }
 
 }  // namespace

@@ -5,15 +5,19 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Edge_profile.h>
 #include <CGAL/boost/graph/generators.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/subdivision_method_3.h>
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -52,6 +56,17 @@ inline Mesh flat_grid(int n) {
   return from_triangles(points, triangles);
 }
 
+// flat_grid(n) bent along x = n / 2, whose vertices are raised by `height`: two planes meeting
+// along a ridge, flat again beyond x = n / 2 -+ 1.
+inline Mesh bent_grid(int n, double height) {
+  Mesh mesh = flat_grid(n);
+  for (auto v : vertices(mesh)) {
+    const Point& p = mesh.point(v);
+    if (p.x() == n / 2) mesh.point(v) = Point(p.x(), p.y(), height);
+  }
+  return mesh;
+}
+
 inline Mesh icosahedron() {
   Mesh mesh;
   CGAL::make_icosahedron<Mesh, Point>(mesh, Point(0, 0, 0), 1.0);
@@ -62,6 +77,19 @@ inline Mesh tetrahedron() {
   Mesh mesh;
   CGAL::make_tetrahedron(Point(1, 1, 1), Point(1, -1, -1), Point(-1, 1, -1), Point(-1, -1, 1),
                          mesh);
+  return mesh;
+}
+
+// An icosahedron Loop-subdivided `levels` times, its vertices pushed onto the unit sphere.
+inline Mesh loop_sphere(int levels) {
+  Mesh mesh = icosahedron();
+  CGAL::Subdivision_method_3::Loop_subdivision(mesh,
+                                               CGAL::parameters::number_of_iterations(levels));
+  for (auto v : vertices(mesh)) {
+    const Point& p = mesh.point(v);
+    const double r = std::sqrt(p.x() * p.x() + p.y() * p.y() + p.z() * p.z());
+    mesh.point(v) = Point(p.x() / r, p.y() / r, p.z() / r);
+  }
   return mesh;
 }
 
@@ -98,6 +126,15 @@ inline Mesh read_clean_mesh(const std::string& name) {
 // A valid halfedge structure made of triangles only.
 inline bool is_valid_triangle_mesh(const Mesh& mesh) {
   return CGAL::is_valid_polygon_mesh(mesh) && CGAL::is_triangle_mesh(mesh);
+}
+
+// The diagonal of the mesh's bounding box, the length Hausdorff tolerances are fractions of (the
+// apps' bbox_diagonal, with CGAL's bbox).
+inline double bbox_diagonal(const Mesh& mesh) {
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(mesh);
+  const double dx = box.xmax() - box.xmin(), dy = box.ymax() - box.ymin(),
+               dz = box.zmax() - box.zmin();
+  return std::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
 inline std::size_t border_edge_count(const Mesh& mesh) {
