@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -81,8 +83,8 @@ TEST_P(EveryPolicyOnRealMeshes, KeepsTheInvariantsAtTenPercent) {
       const Point& p = mesh.point(v);
       ASSERT_TRUE(std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()));
     }
-    const std::string path =
-        testing::TempDir() + "property_" + policy + "_" + std::to_string(run) + ".ply";
+    const std::string path = testing::TempDir() + "property_" + policy + "_" + std::to_string(run) +
+                             "_" + std::to_string(::getpid()) + ".ply";
     apps::write_mesh_atomically(mesh, path);
     written[run] = file_contents(path);
     std::remove(path.c_str());
