@@ -4,6 +4,7 @@
 #include "common/Json_object.h"
 #include "common/Progress_bar.h"
 #include "common/app_main.h"
+#include "common/fitting.h"
 #include "common/mesh_io.h"
 #include "common/mesh_measures.h"
 #include "common/peak_memory.h"
@@ -41,7 +42,7 @@ void print_help() {
          "                        edge-collapse policy, not fast\n"
          "  --merge-distance T    first stitch border vertices of different border loops\n"
          "                        closer than T (a fraction of IN's diagonal; default 0, off)\n"
-      << smoothing_help()
+      << smoothing_help() << fit_help()
       << "  --json                print one JSON object on stdout\n"
          "  --measure             also measure the two-sided error against IN\n"
          "  --samples N           face samples per direction for --measure (default "
@@ -146,6 +147,7 @@ int run(int argc, char** argv) {
   const double merge_distance = cli.take_number("merge-distance").value_or(0.0);
   if (!(merge_distance >= 0)) throw App_error(exit_usage, "--merge-distance must be at least 0");
   const Smoothing_request smoothing = take_smoothing_options(cli);
+  const Fit_request fit = take_fit_options(cli);
   const std::optional<Snapshot_request> snapshot = take_snapshot_options(cli);
   const bool json = cli.take_flag("json"), measure = cli.take_flag("measure"),
              force = cli.take_flag("force"), quiet = cli.take_flag("quiet");
@@ -162,11 +164,9 @@ int run(int argc, char** argv) {
     ratio = parse_number(args[2], "RATIO");
   }
   if (samples && !(*samples >= 1)) throw App_error(exit_usage, "--samples must be at least 1");
-  const double smoothing_tolerance = max_error ? *max_error
-                                     : !policy->bound_option.empty()
-                                         ? settings.options.at(policy->bound_option)
-                                         : 0.0;
-  if (smoothing.bounded && !(smoothing_tolerance > 0))
+  // The run's two-sided bound, which smoothing (when asked) and fitting keep.
+  const double bound = two_sided_bound(*policy, settings);
+  if (smoothing.bounded && !(bound > 0))
     throw App_error(exit_usage, "--smooth-bounded needs --max-error (or a policy's --tolerance)");
   const std::string& input = args[0];
   const std::string& output = args[1];
@@ -180,7 +180,7 @@ int run(int argc, char** argv) {
   const std::size_t input_faces = mesh.number_of_faces();
   const std::size_t input_vertices = mesh.number_of_vertices();
   settings.target_faces = target_face_count(ratio, faces, input_faces);
-  const Mesh original = measure || smoothing.bounded || snapshot ? mesh : Mesh();
+  const Mesh original = measure || smoothing.bounded || snapshot || fit.enabled ? mesh : Mesh();
   // The pre-pass (docs/quadric_core.md, pair contraction) is not part of the simplification's time.
   const cgal_policies::Border_pair_contraction_report merge_report =
       cgal_policies::Border_pair_contraction(merge_distance)(mesh);
@@ -193,8 +193,11 @@ int run(int argc, char** argv) {
     outcome = policy->run(mesh, settings);
   }
   mesh.collect_garbage();
-  const std::size_t refused_smoothing_moves =
-      smooth_mesh(mesh, original, smoothing, smoothing_tolerance);
+  const std::size_t refused_smoothing_moves = smooth_mesh(mesh, original, smoothing, bound);
+  // After smoothing, so that the output the user gets is the fitted one.
+  const Fit_outcome fitted =
+      fit.enabled ? fit_to_input(mesh, original, fit.rounds, settings.max_normal_angle_deg, bound)
+                  : Fit_outcome();
   write_mesh_and_snapshot(original, mesh, policy->name, snapshot, output);
 
   const std::size_t removed = input_faces - mesh.number_of_faces();
@@ -215,6 +218,14 @@ int run(int argc, char** argv) {
   if (snapshot) report.add("snapshot", snapshot->png);
   report.add("smooth_iterations", smoothing.iterations);
   report.add("smooth_refused_moves", refused_smoothing_moves);
+  if (fit.enabled) {
+    report.add("fit_seconds", fitted.seconds);
+    report.add("fit_rounds", fitted.report.rounds);
+    report.add("fit_moves", fitted.report.moves);
+    report.add("fit_refused_moves", fitted.report.refused_moves);
+    report.add("fit_flips", fitted.report.flips);
+    report.add("fit_refused_flips", fitted.report.refused_flips);
+  }
   report.add("repairs", read_report.repairs);
   report.add("merge_distance", merge_distance);
   report.add("merged_pairs", merge_report.merged_pairs);

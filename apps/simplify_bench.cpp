@@ -9,10 +9,12 @@
 #include "common/App_error.h"
 #include "common/Command_line.h"
 #include "common/app_main.h"
+#include "common/fitting.h"
 #include "common/policy_command_line.h"
 #include "common/policy_registry.h"
 
 #include <algorithm>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -57,6 +59,9 @@ void print_help() {
          "                       reference of the time ratios): "
       << names(all_policies())
       << "\n"
+         "  --fit                add a P+fit row beside each policy P: P, then the fitting\n"
+         "                       pass (docs/fitting.md); the standard preset has lt+fit,\n"
+         "                       gh+fit and hausdorff+fit without it; --policies takes P+fit\n"
          "  --repetitions N      runs per case; the fastest counts (default: the preset's, "
          "else 3)\n"
          "  --samples N          face samples per direction of the error measure\n"
@@ -110,13 +115,19 @@ std::vector<Policy_entry> select_policies(const std::optional<std::string>& list
   if (!list) return all;
   std::vector<Policy_entry> chosen;
   for (const std::string& name : split_list(*list)) {
+    // "P+fit": P, then the fitting pass.
+    const bool fitted =
+        name.size() > std::strlen(kFitSuffix) &&
+        name.compare(name.size() - std::strlen(kFitSuffix), std::string::npos, kFitSuffix) == 0;
+    const std::string base = fitted ? name.substr(0, name.size() - std::strlen(kFitSuffix)) : name;
     const auto it =
-        std::find_if(all.begin(), all.end(), [&](const Policy_entry& p) { return p.name == name; });
+        std::find_if(all.begin(), all.end(), [&](const Policy_entry& p) { return p.name == base; });
     if (it == all.end())
-      throw App_error(exit_usage, "unknown policy '" + name + "' (" + names(all) + ")");
+      throw App_error(exit_usage, "unknown policy '" + name + "' (" + names(all) +
+                                      ", each also as P" + kFitSuffix + ")");
     if (std::none_of(chosen.begin(), chosen.end(),
                      [&](const Policy_entry& p) { return p.name == name; }))
-      chosen.push_back(*it);
+      chosen.push_back(fitted ? with_fit(*it) : *it);
   }
   if (std::none_of(chosen.begin(), chosen.end(),
                    [](const Policy_entry& p) { return p.name == "gh"; }))
@@ -160,6 +171,7 @@ int run(int argc, char** argv) {
   if (time_limit && !(*time_limit >= 0))
     throw App_error(exit_usage, "--time-limit must be at least 0 seconds");
   const std::optional<std::string> out = cli.take_value("out");
+  const bool fit_all = cli.take_flag("fit");
 
   Bench_plan plan;
   plan.policies = select_policies(policy_list);
@@ -192,6 +204,21 @@ int run(int argc, char** argv) {
     plan.repetitions = repetitions ? repetitions : 3;
     plan.samples = samples ? samples : kDefaultErrorSamples;
     plan.time_limit_seconds = time_limit.value_or(0.0);
+  }
+  // The "P+fit" rows: beside every policy with --fit, beside the preset's choice without.
+  std::vector<std::string> fitted;
+  for (const Policy_entry& p : plan.policies)
+    if (fit_all || (preset_name && !policy_list && [&] {
+          const auto& names = find_bench_preset(*preset_name)->fitted;
+          return std::find(names.begin(), names.end(), p.name) != names.end();
+        }()))
+      fitted.push_back(p.name);
+  for (const std::string& name : fitted) {
+    const auto at = std::find_if(plan.policies.begin(), plan.policies.end(),
+                                 [&](const Policy_entry& p) { return p.name == name; });
+    if (std::none_of(plan.policies.begin(), plan.policies.end(),
+                     [&](const Policy_entry& p) { return p.name == name + kFitSuffix; }))
+      plan.policies.insert(at + 1, with_fit(*at));
   }
   // Fail before hours of work, not after.
   for (const Bench_mesh& m : plan.meshes)

@@ -224,4 +224,32 @@ TEST(BenchTimeLimit, StopsARunWhereItIsAndDoesNotRepeatIt) {
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 2) << status;
 }
 
+// --fit adds a P+fit row beside each policy, with the pass's time and a "Fitting pass" table that
+// compares it with P and with lt.
+TEST(BenchFit, AddsAFittedRowBesideEachPolicy) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const fs::path out =
+      fs::temp_directory_path() / ("cgal_policies_bench_fit_" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  ASSERT_EQ(run_command(std::string(CGAL_POLICIES_BIN_DIR) + "/simplify_bench --mesh '" +
+                        CGAL_POLICIES_SOURCE_DIR + "/data/cow.obj' --ratios 0.1 --policies lt " +
+                        "--fit --repetitions 1 --samples 20000 --out '" + out.string() +
+                        "' > /dev/null 2>&1"),
+            0);
+  const std::vector<Row> rows = read_csv(out / "runs.csv");
+  std::vector<std::string> policies;
+  for (const Row& row : rows) {
+    policies.push_back(row.at("policy"));
+    const bool fitted = row.at("policy").find("+fit") != std::string::npos;
+    EXPECT_EQ(std::stod(row.at("fit_seconds")) > 0, fitted) << row.at("policy");
+    EXPECT_EQ(row.at("output_faces"), rows.front().at("output_faces")) << row.at("policy");
+    EXPECT_EQ(row.at("valid"), "true") << row.at("policy");
+  }
+  EXPECT_EQ(policies, (std::vector<std::string>{"gh", "gh+fit", "lt", "lt+fit"}));
+  const std::string report = read_text(out / "report.md");
+  EXPECT_NE(report.find("## Fitting pass"), std::string::npos);
+  EXPECT_EQ(count_occurrences(report, "| cow.obj | 10% → 580 | "), 2u) << report;
+  fs::remove_all(out);
+}
+
 }  // namespace

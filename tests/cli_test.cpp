@@ -258,6 +258,28 @@ TEST_F(Cli, MaxErrorBoundsEveryEdgeCollapsePolicy) {
   }
 }
 
+TEST_F(Cli, FitIsReportedAndTwoRunsWriteTheSameBytes) {
+  const std::string cow = std::string(CGAL_POLICIES_DATA_DIR) + "/cow.obj";
+  std::string written[2];
+  for (int run_index = 0; run_index < 2; ++run_index) {
+    const fs::path out = file("cow_" + std::to_string(run_index) + ".ply");
+    const Command_result r =
+        run("simplify",
+            cow + " " + out.string() + " 0.1 --policy lt --fit --fit-rounds 2 --json --quiet");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    for (const char* field : {"\"fit_seconds\": ", "\"fit_rounds\": 2,",
+                              "\"fit_flips\": ", "\"fit_moves\": ", "\"output_faces\": 580,"})
+      EXPECT_NE(r.out.find(field), std::string::npos) << field << " missing in " << r.out;
+    written[run_index] = read_text(out);
+  }
+  EXPECT_FALSE(written[0].empty());
+  EXPECT_TRUE(written[0] == written[1]) << "two fitted runs wrote different files";
+  const fs::path in = write("tet.off", kTetrahedronOff), out = file("out.off");
+  expect_failure(in.string() + " " + out.string() + " 1 --fit-rounds 2", 2, "--fit-rounds", out);
+  expect_failure(in.string() + " " + out.string() + " 1 --fit --fit-rounds 0", 2, "--fit-rounds",
+                 out);
+}
+
 TEST_F(Cli, TheFastPolicyRefusesMaxError) {
   const fs::path in = write("tet.off", kTetrahedronOff), out = file("out.off");
   const Command_result r =

@@ -4,6 +4,7 @@
 // bounds a run of another policy; Hausdorff_move_guard bounds Laplacian_smoother. The exact cases
 // with the library alone are in hausdorff_policy_test.cpp.
 #include "common/edge_collapse_runner.h"
+#include "common/fitting.h"
 #include "common/mesh_io.h"
 #include "common/mesh_measures.h"
 #include "test_meshes.h"
@@ -74,6 +75,22 @@ TEST(HausdorffBoundedPolicies, LocalModeAccumulatesWhileGlobalModeKeepsTheBound)
   EXPECT_LE(global.hausdorff, beta * global.bbox_diagonal);
 }
 
+// `original` simplified by the Hausdorff-bounded policies toward `target` faces.
+Mesh simplified_within(const Mesh& original,
+                       const cgal_policies::Hausdorff_bounded_options& options,
+                       std::size_t target) {
+  Mesh mesh = original;
+  {
+    const Policies policy(mesh, options);
+    apps::Simplify_settings settings;
+    settings.target_faces = target;
+    apps::run_edge_collapse(mesh, settings, policy.get_cost(), policy.get_placement(),
+                            policy.get_filter());
+  }
+  mesh.collect_garbage();
+  return mesh;
+}
+
 // The guarantee: in global mode, mesh_error's two-sided Hausdorff distance never exceeds the
 // tolerance, smoothing off and bounded smoothing on. (The registry's "hausdorff" entry runs the
 // same classes; property_test checks it like every policy.)
@@ -85,17 +102,9 @@ TEST(HausdorffBoundedPolicies, GlobalModeKeepsTheTwoSidedBoundOnRealMeshes) {
       cgal_policies::Hausdorff_bounded_options options;
       options.beta = tolerance;
       for (const bool smooth : {false, true}) {
-        Mesh mesh = original;
-        {
-          const Policies policy(mesh, options);
-          // Down to 5% of the faces, or as far as the tolerance allows: far enough that the
-          // tighter tolerances stop the run, and short enough for a test.
-          apps::Simplify_settings settings;
-          settings.target_faces = original.number_of_faces() / 20;
-          apps::run_edge_collapse(mesh, settings, policy.get_cost(), policy.get_placement(),
-                                  policy.get_filter());
-        }
-        mesh.collect_garbage();
+        // Down to 5% of the faces, or as far as the tolerance allows: far enough that the
+        // tighter tolerances stop the run, and short enough for a test.
+        Mesh mesh = simplified_within(original, options, original.number_of_faces() / 20);
         if (smooth) {
           const cgal_policies::Hausdorff_move_guard<Mesh> guard(original, mesh, tolerance);
           cgal_policies::Laplacian_smoother<Mesh>().smooth(mesh, 3, guard);
@@ -108,6 +117,28 @@ TEST(HausdorffBoundedPolicies, GlobalModeKeepsTheTwoSidedBoundOnRealMeshes) {
         EXPECT_LT(mesh.number_of_faces(), original.number_of_faces());
       }
     }
+  }
+}
+
+// The fitting pass in bounded mode (docs/fitting.md): the bound the simplification kept holds after
+// the pass too, by the evaluator, and the mean error drops.
+TEST(TwoSidedFitter, BoundedModeKeepsTheBoundOfTheRun) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  for (const std::string name : {"bunny.obj", "fandisk.obj", "teapot.obj", "cow.obj"}) {
+    const Mesh original = apps::read_triangle_mesh(test_meshes::data_file(name));
+    const double tolerance = 0.005;
+    cgal_policies::Hausdorff_bounded_options options;
+    options.beta = tolerance;
+    Mesh mesh = simplified_within(original, options, original.number_of_faces() / 100);
+    const apps::Mesh_error before = apps::measure_mesh_error(original, mesh);
+    const apps::Fit_outcome fit = apps::fit_to_input(mesh, original, 4, 90, tolerance);
+    EXPECT_GT(fit.report.moves, 0u) << name;
+    const apps::Mesh_error after = apps::measure_mesh_error(original, mesh);
+    EXPECT_LE(after.hausdorff, tolerance * after.bbox_diagonal)
+        << name << ": Hausdorff " << after.hausdorff / after.bbox_diagonal;
+    EXPECT_LT(after.mean_a_to_b + after.mean_b_to_a, before.mean_a_to_b + before.mean_b_to_a)
+        << name;
+    EXPECT_TRUE(apps::check_mesh_validity(mesh).valid) << name;
   }
 }
 

@@ -5,10 +5,13 @@
 
 #include "common/mesh_io.h"
 
+#include "common/fitting.h"
 #include "common/mesh_measures.h"
 #include "common/policy_registry.h"
 
 #include <cgal_policies/Fast_threshold_simplifier.h>
+
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 
 #include <gtest/gtest.h>
 
@@ -100,6 +103,54 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& test) {
       return identifier(std::get<0>(test.param) + "_" + std::get<1>(test.param));
     });
+
+std::size_t self_intersection_count(const Mesh& mesh) {
+  std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
+  CGAL::Polygon_mesh_processing::self_intersections(mesh, std::back_inserter(pairs));
+  return pairs.size();
+}
+
+double mean_error(const Mesh& original, const Mesh& mesh) {
+  const apps::Mesh_error e = apps::measure_mesh_error(original, mesh, 50000);
+  return (e.mean_a_to_b + e.mean_b_to_a) / 2;
+}
+
+// The fitting pass after a policy (docs/fitting.md): a valid output with the same faces, borders
+// and topology, no more self-intersections than before, and a lower mean error.
+class FitAfterAPolicy
+    : public testing::TestWithParam<std::tuple<std::string, std::string, double>> {};
+
+TEST_P(FitAfterAPolicy, KeepsTheInvariantsAndLowersTheMeanError) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const auto& [policy, mesh_name, ratio] = GetParam();
+  const Mesh input = apps::read_triangle_mesh(data_file(mesh_name));
+  Mesh mesh = input;
+  simplify(mesh, policy, std::size_t(std::llround(ratio * input.number_of_faces())));
+  const apps::Mesh_validity before = apps::check_mesh_validity(mesh);
+  const std::size_t crossings_before = self_intersection_count(mesh);
+  const double error_before = mean_error(input, mesh);
+  const apps::Fit_outcome fit = apps::fit_to_input(mesh, input, 4, 90, 0);
+  EXPECT_EQ(fit.report.rounds, 4);
+  const apps::Mesh_validity after = apps::check_mesh_validity(mesh);
+  EXPECT_TRUE(after.valid);
+  EXPECT_EQ(after.faces, before.faces);
+  EXPECT_EQ(after.closed, before.closed);
+  EXPECT_EQ(after.boundary_edges, before.boundary_edges);
+  EXPECT_EQ(after.non_manifold_vertices, before.non_manifold_vertices);
+  EXPECT_EQ(after.euler_characteristic, before.euler_characteristic);
+  EXPECT_LE(after.degenerate_faces, before.degenerate_faces);
+  EXPECT_LE(self_intersection_count(mesh), crossings_before);
+  EXPECT_LT(mean_error(input, mesh), error_before);
+}
+
+INSTANTIATE_TEST_SUITE_P(RealMeshes, FitAfterAPolicy,
+                         testing::Combine(testing::Values("lt", "gh", "fast"),
+                                          testing::Values("bunny.obj", "fandisk.obj", "cow.obj"),
+                                          testing::Values(0.05)),
+                         [](const auto& test) {
+                           return identifier(std::get<0>(test.param) + "_" +
+                                             std::get<1>(test.param));
+                         });
 
 class EveryPolicy : public testing::TestWithParam<std::string> {};
 

@@ -41,7 +41,8 @@ const std::vector<Bench_preset>& bench_presets() {
         {"dragon.ply", {ratio(0.1), ratio(0.01)}}},
        3,
        200000,
-       600},
+       600,
+       {"lt", "gh", "hausdorff"}},
       {"papers",
        "the papers' experiments: [Wang13] (four levels per model), [Zhang09] (cow), [Hu14] "
        "(dragon to 1%)",

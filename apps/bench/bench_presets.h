@@ -29,6 +29,8 @@ struct Bench_preset {
   std::size_t samples;  // face samples per direction for the error measure
   // Per run, so that a policy far slower than the others cannot hold the whole matrix up.
   double time_limit_seconds;
+  // Policies whose output the preset also fits to the input ("P+fit" rows, docs/fitting.md).
+  std::vector<std::string> fitted = {};
 };
 
 // The presets by name: "standard", "papers", "quick".

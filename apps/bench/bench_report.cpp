@@ -143,6 +143,43 @@ std::string summary(const std::vector<std::vector<const Run_record*>>& groups) {
   return md;
 }
 
+// Per fitted run "P+fit": its mean error and Hausdorff distance against P's and lt's on the same
+// mesh and target, and its fitting pass's time against lt's simplification (docs/fitting.md).
+std::string fitting_table(const std::vector<Run_record>& records) {
+  const std::string suffix = "+fit";
+  const auto find = [&](const Run_record& like, const std::string& policy) -> const Run_record* {
+    for (const Run_record& r : records)
+      if (r.mesh == like.mesh && r.target == like.target && r.label == like.label &&
+          r.policy == policy)
+        return &r;
+    return nullptr;
+  };
+  const auto ratio = [](double a, double b) { return b > 0 ? format("%.3f", a / b) : "–"; };
+  std::string rows;
+  for (const Run_record& r : records) {
+    if (r.policy.size() <= suffix.size() ||
+        r.policy.compare(r.policy.size() - suffix.size(), suffix.size(), suffix) != 0)
+      continue;
+    const Run_record* base = find(r, r.policy.substr(0, r.policy.size() - suffix.size()));
+    const Run_record* lt = find(r, "lt");
+    rows += "| " + r.mesh + " | " + target_cell(r) + " | " + r.policy + " | " + faces_cell(r) +
+            " | " + seconds_cell(r.fit_seconds) + " | " + std::to_string(r.fit_flips) + " | " +
+            (base ? ratio(mean_error_rel(r), mean_error_rel(*base)) : "–") + " | " +
+            (lt ? ratio(mean_error_rel(r), mean_error_rel(*lt)) : "–") + " | " +
+            (lt ? ratio(r.error.hausdorff, lt->error.hausdorff) : "–") + " | " +
+            (lt ? ratio(r.fit_seconds, lt->seconds) : "–") + " | " + validity_cell(r.validity) +
+            " |\n";
+  }
+  if (rows.empty()) return "";
+  return "## Fitting pass\n\nP+fit: P, then the two-sided fit (docs/fitting.md). Mean: both "
+         "directions averaged, over P's and over lt's at the same target; Hausdorff over lt's; "
+         "fit time over lt's simplification time.\n\n"
+         "| mesh | target → faces | run | faces | fit s | flips | mean / P | mean / lt | "
+         "Hausdorff / lt | fit s / lt s | output |\n"
+         "|---|---|---|---|---|---|---|---|---|---|---|\n" +
+         rows + "\n";
+}
+
 }  // namespace
 
 std::string runs_csv(const std::vector<Run_record>& records) {
@@ -189,7 +226,7 @@ std::string markdown_report(const std::vector<Run_record>& records, const std::s
         "run (+ what the run added).\n\n";
   const auto groups = group_by_mesh(records);
   for (const auto& runs : groups) md += mesh_table(runs);
-  return md + summary(groups);
+  return md + fitting_table(records) + summary(groups);
 }
 
 }  // namespace apps

@@ -61,7 +61,7 @@ Run_record run_policy(const Mesh& original, const Policy_entry& policy, const Be
   Run_record record;
   record.policy = policy.name;
   record.repetitions = plan.repetitions;
-  std::vector<double> seconds;
+  std::vector<double> seconds, fit_seconds;
   Mesh result;
   for (std::size_t rep = 0; rep < plan.repetitions; ++rep) {
     progress.start_run(case_name + ", " + policy.name + ", repetition " + std::to_string(rep + 1) +
@@ -72,8 +72,10 @@ Run_record run_policy(const Mesh& original, const Policy_entry& policy, const Be
     record.peak_memory_mib = std::max(record.peak_memory_mib, memory.peak_mib());
     record.memory_added_mib = std::max(record.memory_added_mib, memory.added_mib());
     seconds.push_back(outcome.seconds);
+    fit_seconds.push_back(outcome.fit_seconds);
     if (rep == 0) {
       record.stop_reason = to_string(outcome.stop_reason);
+      record.fit_flips = outcome.fit_flips;
       result = std::move(mesh);
     } else if (mesh.number_of_faces() != result.number_of_faces()) {
       std::fprintf(stderr, "simplify_bench: %s: %s is not deterministic (%zu then %zu faces)\n",
@@ -91,6 +93,7 @@ Run_record run_policy(const Mesh& original, const Policy_entry& policy, const Be
   record.output_vertices = result.number_of_vertices();
   record.seconds = *std::min_element(seconds.begin(), seconds.end());
   record.seconds_median = median(seconds);
+  record.fit_seconds = *std::min_element(fit_seconds.begin(), fit_seconds.end());
   record.error = measure_mesh_error(original, result, plan.samples);
   record.validity = check_mesh_validity(result);
   return record;

@@ -48,6 +48,8 @@ struct Run_record {
   double faces_removed_per_second = 0;
   double peak_memory_mib = 0;   // during the simplification (the largest over the repetitions)
   double memory_added_mib = 0;  // that peak minus the resident size just before the run
+  double fit_seconds = 0;       // the fitting pass of a "P+fit" run (fastest repetition), else 0
+  std::size_t fit_flips = 0;
   Mesh_error error;
   Mesh_validity validity;
 };
@@ -94,6 +96,8 @@ void for_each_field(const Run_record& r, Visitor&& visit) {
   visit("degenerate_faces", r.validity.degenerate_faces);
   visit("min_angle_deg", r.validity.min_angle_deg);
   visit("euler_characteristic", r.validity.euler_characteristic);
+  visit("fit_seconds", r.fit_seconds);
+  visit("fit_flips", r.fit_flips);
 }
 
 // The mean error of a record in both directions, averaged, relative to the diagonal: the figure the

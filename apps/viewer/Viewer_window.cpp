@@ -3,6 +3,7 @@
 #include "Collapse_replay.h"
 #include "Latest_task.h"
 #include "Surface_distance.h"
+#include "common/fitting.h"
 #include "common/mesh_measures.h"
 #include "snapshot.h"
 
@@ -71,7 +72,7 @@ class Viewer {
   void draw(int width, int height) {
     Scene_captions captions;
     captions.left = mesh_caption("original", input_faces(), m_mesh.number_of_vertices());
-    captions.right = mesh_caption(m_policy->name, m_faces, m_vertices);
+    captions.right = mesh_caption(m_policy->name + (m_fit ? kFitSuffix : ""), m_faces, m_vertices);
     if (m_heat_map) {
       captions.legend_max = m_legend_max;
       captions.legend_unit = "% diag";
@@ -91,26 +92,30 @@ class Viewer {
     Simplify_settings settings = m_settings;
     settings.on_progress = [this](std::size_t faces) { m_progress_faces = faces; };
     m_progress_faces = input_faces();
+    // A fitted result cannot be replayed collapse by collapse: each target is run anew.
+    record = record && !m_fit;
     m_recording = record;
-    m_simplifier.submit([this, record, settings, policy = m_policy, target = m_target]() mutable {
-      Simplified result;
-      result.target = target;
-      if (record) {
-        const Collapse_history history = record_collapses(m_mesh, *policy, settings);
-        result.outcome = history.outcome;
-        result.smallest_faces = std::max<std::size_t>(1, history.final_faces);
-        // A policy that simplifies outside the edge-collapse visitor leaves no history.
-        if (!history.collapses.empty()) {
-          result.replay = std::make_shared<const Collapse_replay>(m_mesh, history);
+    Policy_entry entry = m_fit ? with_fit(*m_policy) : *m_policy;
+    m_simplifier.submit(
+        [this, record, settings, policy = std::move(entry), target = m_target]() mutable {
+          Simplified result;
+          result.target = target;
+          if (record) {
+            const Collapse_history history = record_collapses(m_mesh, policy, settings);
+            result.outcome = history.outcome;
+            result.smallest_faces = std::max<std::size_t>(1, history.final_faces);
+            // A policy that simplifies outside the edge-collapse visitor leaves no history.
+            if (!history.collapses.empty()) {
+              result.replay = std::make_shared<const Collapse_replay>(m_mesh, history);
+              return result;
+            }
+          }
+          result.mesh = m_mesh;
+          settings.target_faces = target;
+          result.outcome = policy.run(result.mesh, settings);
+          result.mesh.collect_garbage();
           return result;
-        }
-      }
-      result.mesh = m_mesh;
-      settings.target_faces = target;
-      result.outcome = policy->run(result.mesh, settings);
-      result.mesh.collect_garbage();
-      return result;
-    });
+        });
   }
 
   // Shows the current result at the current target, and measures it in the background.
@@ -192,6 +197,9 @@ class Viewer {
     changed |= ImGui::IsItemDeactivatedAfterEdit();
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("our policies refuse collapses that turn a face normal further (degrees)");
+    changed |= ImGui::Checkbox("fit to input", &m_fit);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("then fit the result to the input, both ways (docs/fitting.md)");
     if (changed) simplify(true);
 
     ImGui::Separator();
@@ -262,6 +270,7 @@ class Viewer {
   float m_panel_width = 0;         // in window coordinates, as the last frame laid it out
   double m_value_before_edit = 0;  // of the policy option being edited
   bool m_heat_map;
+  bool m_fit = false;  // run the policy's "+fit" entry (common/fitting.h)
   Scene_renderer m_renderer;
   Orbit_camera m_camera;
   std::size_t m_target = 1;

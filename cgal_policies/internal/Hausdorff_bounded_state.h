@@ -14,6 +14,8 @@
 #include <cgal_policies/internal/Storage_scan_order.h>
 #include <cgal_policies/internal/mesh_geometry.h>
 
+#include <CGAL/assertions.h>
+
 #include <vector>
 
 namespace cgal_policies {
@@ -104,6 +106,23 @@ class Hausdorff_bounded_state {
     if (d.distance > tolerance() || !m_certifier.certify(patch, p, d, covers)) return false;
     m_pending.hold(patch, v, v, p, d, std::move(covers));
     m_pending.commit(m_attachment, m_options.reference);
+    return true;
+  }
+
+  // True, and the pieces attached again, when `faces`, whose connectivity changed with no corner
+  // moving (an edge flip already made), keep the bound; the caller undoes the change otherwise.
+  template <typename VertexPointMap>
+  bool try_reshape(
+      const TriangleMesh& tm, const VertexPointMap& vpm,
+      const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& faces) {
+    CGAL_precondition(global());
+    m_pending.commit(m_attachment, m_options.reference);
+    const auto patch = make_reshaped_patch(tm, vpm, faces, m_attachment);
+    if (is_frozen(patch, m_attachment)) return false;
+    std::vector<Piece_cover> covers;
+    if (!m_certifier.certify(patch, Eigen::Vector3d::Zero(), Reference_sample{}, covers))
+      return false;
+    m_attachment.reattach(patch.faces, {}, covers);
     return true;
   }
 

@@ -34,6 +34,19 @@ struct Hausdorff_patch {
   std::vector<std::uint32_t> piece_sources;
 };
 
+// What a patch must keep covering under the global reference: the pieces attached to its faces.
+template <typename TriangleMesh>
+void add_attached_pieces(
+    Hausdorff_patch<typename boost::graph_traits<TriangleMesh>::face_descriptor>& patch,
+    const Hausdorff_attachment<TriangleMesh>& attachment) {
+  for (const auto* list : {&patch.faces, &patch.removed})
+    for (auto f : *list)
+      for (std::uint32_t i : attachment.pieces_of(f)) {
+        patch.pieces.push_back(attachment.piece(i));
+        patch.piece_sources.push_back(i);
+      }
+}
+
 // The patch around v0 and v1 (v0 == v1: one vertex moves).
 template <typename TriangleMesh, typename VertexPointMap>
 Hausdorff_patch<typename boost::graph_traits<TriangleMesh>::face_descriptor> make_patch(
@@ -75,12 +88,7 @@ Hausdorff_patch<typename boost::graph_traits<TriangleMesh>::face_descriptor> mak
     }
   }
   if (global) {
-    for (const auto* list : {&patch.faces, &patch.removed})
-      for (auto f : *list)
-        for (std::uint32_t i : attachment.pieces_of(f)) {
-          patch.pieces.push_back(attachment.piece(i));
-          patch.piece_sources.push_back(i);
-        }
+    add_attached_pieces(patch, attachment);
   } else {
     patch.reference = patch.before;
     patch.reference.insert(patch.reference.end(), patch.removed_before.begin(),
@@ -88,6 +96,28 @@ Hausdorff_patch<typename boost::graph_traits<TriangleMesh>::face_descriptor> mak
     patch.pieces = patch.reference;
     patch.piece_sources.assign(patch.pieces.size(), kNewPiece);
   }
+  return patch;
+}
+
+// The patch of faces whose corners stay where they are while their connectivity changes (an edge
+// flip), as they are after the change; global reference only.
+template <typename TriangleMesh, typename VertexPointMap>
+Hausdorff_patch<typename boost::graph_traits<TriangleMesh>::face_descriptor> make_reshaped_patch(
+    const TriangleMesh& tm, const VertexPointMap& vpm,
+    const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& faces,
+    const Hausdorff_attachment<TriangleMesh>& attachment) {
+  Hausdorff_patch<typename boost::graph_traits<TriangleMesh>::face_descriptor> patch;
+  for (auto f : faces) {
+    patch.faces.push_back(f);
+    patch.before.push_back(face_corners(f, tm, vpm));
+    patch.moving.push_back({false, false, false});
+    std::array<Reference_sample, 3> distances;
+    int k = 0;
+    for (auto v : CGAL::vertices_around_face(halfedge(f, tm), tm))
+      distances[k++] = attachment.sample(v);
+    patch.corner_distances.push_back(distances);
+  }
+  add_attached_pieces(patch, attachment);
   return patch;
 }
 

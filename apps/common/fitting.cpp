@@ -1,0 +1,71 @@
+#include "fitting.h"
+
+#include "App_error.h"
+
+#include <cgal_policies/Two_sided_fitter.h>
+
+#include <chrono>
+#include <cmath>
+
+namespace apps {
+
+const char* const kFitSuffix = "+fit";
+
+Fit_request take_fit_options(Command_line& cli) {
+  Fit_request request;
+  request.enabled = cli.take_flag("fit");
+  request.rounds = cgal_policies::Two_sided_fit_options().rounds;
+  if (const auto rounds = cli.take_number("fit-rounds")) {
+    if (!request.enabled) throw App_error(exit_usage, "--fit-rounds goes with --fit");
+    if (!(*rounds >= 1 && *rounds <= 1000 && *rounds == std::floor(*rounds)))
+      throw App_error(exit_usage, "--fit-rounds must be a whole number in [1, 1000]");
+    request.rounds = int(*rounds);
+  }
+  return request;
+}
+
+std::string fit_help() {
+  return "  --fit                 then fit the output to IN in both directions, moving vertices\n"
+         "                        and flipping edges (docs/fitting.md); within the run's bound\n"
+         "                        when it has one (--max-error, or the policy's --tolerance)\n"
+         "  --fit-rounds N        fit rounds, each followed by a flip round, 1..1000 (default " +
+         std::to_string(cgal_policies::Two_sided_fit_options().rounds) + ")\n";
+}
+
+double two_sided_bound(const Policy_entry& policy, const Simplify_settings& settings) {
+  if (settings.max_error > 0) return settings.max_error;
+  return policy.bound_option.empty() ? 0.0 : settings.options.at(policy.bound_option);
+}
+
+Fit_outcome fit_to_input(Mesh& mesh, const Mesh& original, int rounds, double max_normal_angle_deg,
+                         double bound) {
+  const auto start = std::chrono::steady_clock::now();
+  cgal_policies::Two_sided_fit_options options;
+  options.rounds = rounds;
+  options.max_normal_angle_deg = max_normal_angle_deg;
+  options.tolerance = bound;
+  Fit_outcome outcome;
+  outcome.report = cgal_policies::Two_sided_fitter<Mesh>(original, options).fit(mesh);
+  outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return outcome;
+}
+
+Policy_entry with_fit(const Policy_entry& policy) {
+  Policy_entry fitted = policy;
+  fitted.name = policy.name + kFitSuffix;
+  fitted.summary = policy.summary + ", then fitted to the input (docs/fitting.md)";
+  fitted.run = [policy](Mesh& mesh, const Simplify_settings& settings) {
+    const Mesh original = mesh;
+    Simplify_outcome outcome = policy.run(mesh, settings);
+    mesh.collect_garbage();
+    const Fit_outcome fit =
+        fit_to_input(mesh, original, cgal_policies::Two_sided_fit_options().rounds,
+                     settings.max_normal_angle_deg, two_sided_bound(policy, settings));
+    outcome.fit_seconds = fit.seconds;
+    outcome.fit_flips = fit.report.flips;
+    return outcome;
+  };
+  return fitted;
+}
+
+}  // namespace apps

@@ -1,0 +1,19 @@
+// The parameters of Two_sided_fitter (docs/fitting.md); Two_sided_fitter.h lists their ranges.
+#ifndef CGAL_POLICIES_TWO_SIDED_FIT_OPTIONS_H
+#define CGAL_POLICIES_TWO_SIDED_FIT_OPTIONS_H
+
+namespace cgal_policies {
+
+struct Two_sided_fit_options {
+  int rounds = 4;                    // fit rounds, each followed by a flip round
+  bool flips = true;                 // flip edges between the fits
+  double trust_fraction = 0.3;       // a vertex moves at most this much of its mean edge per round
+  bool target_mean = false;          // reweight toward the mean (L1) distance rather than the RMS
+  double max_normal_angle_deg = 90;  // no face normal turns more than this during the pass
+  double tolerance =
+      0;  // > 0: bounded mode, a two-sided bound as a fraction of the input's diagonal
+};
+
+}  // namespace cgal_policies
+
+#endif  // CGAL_POLICIES_TWO_SIDED_FIT_OPTIONS_H

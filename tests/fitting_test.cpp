@@ -1,0 +1,195 @@
+// The fitting pass (docs/fitting.md) on tiny meshes with exact expectations, and its guard.
+#include "test_meshes.h"
+
+#include <cgal_policies/Two_sided_fitter.h>
+#include <cgal_policies/internal/Fit_guard.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace {
+
+using namespace test_meshes;
+using cgal_policies::Two_sided_fit_options;
+using cgal_policies::Two_sided_fit_report;
+using cgal_policies::Two_sided_fitter;
+
+double radius(const Point& p) {
+  return std::sqrt(CGAL::to_double((p - CGAL::ORIGIN).squared_length()));
+}
+
+// The mean of | |x| - 1 | over a grid of points on every face: the distance to the unit sphere.
+double mean_distance_to_unit_sphere(const Mesh& mesh) {
+  double sum = 0;
+  std::size_t count = 0;
+  for (auto f : faces(mesh)) {
+    std::vector<Point> corners;
+    for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      corners.push_back(mesh.point(v));
+    for (int i = 0; i <= 4; ++i)
+      for (int j = 0; i + j <= 4; ++j) {
+        const double a = i / 4.0, b = j / 4.0, c = 1 - a - b;
+        const Point p(a * corners[0].x() + b * corners[1].x() + c * corners[2].x(),
+                      a * corners[0].y() + b * corners[1].y() + c * corners[2].y(),
+                      a * corners[0].z() + b * corners[1].z() + c * corners[2].z());
+        sum += std::abs(radius(p) - 1);
+        ++count;
+      }
+  }
+  return sum / double(count);
+}
+
+Mesh scaled(Mesh mesh, double factor) {
+  for (auto v : vertices(mesh)) {
+    const Point& p = mesh.point(v);
+    mesh.point(v) = Point(factor * p.x(), factor * p.y(), factor * p.z());
+  }
+  return mesh;
+}
+
+TEST(TwoSidedFitter, ACoarsePlaneOnThePlaneItApproximatesStaysExactlyAsItIs) {
+  const Mesh input = flat_grid(16);
+  const Mesh before = scaled(flat_grid(4), 4);  // the same square, coarser: no distance to lower
+  Mesh output = before;
+  const Two_sided_fit_report report = Two_sided_fitter<Mesh>(input).fit(output);
+  EXPECT_EQ(report.rounds, 0);  // the first round lowered nothing and was undone
+  EXPECT_EQ(report.flips, 0u);
+  for (auto v : vertices(output)) EXPECT_EQ(output.point(v), before.point(v));
+  for (auto f : faces(output))
+    EXPECT_EQ(halfedge(f, output), halfedge(f, before)) << "connectivity changed";
+}
+
+TEST(TwoSidedFitter, ACoarsePlaneLiftedOffItsPlaneComesBackToIt) {
+  const Mesh input = flat_grid(16);
+  Mesh output = scaled(flat_grid(4), 4);
+  for (auto v : vertices(output))
+    if (!CGAL::is_border(v, output)) {
+      const Point& p = output.point(v);
+      output.point(v) = Point(p.x(), p.y(), 0.25);
+    }
+  const Two_sided_fit_report report = Two_sided_fitter<Mesh>(input).fit(output);
+  EXPECT_GE(report.rounds, 1);
+  EXPECT_TRUE(is_valid_triangle_mesh(output));
+  EXPECT_EQ(output.number_of_faces(), 32u);
+  for (auto v : vertices(output)) {
+    const Point& p = output.point(v);
+    if (CGAL::is_border(v, output)) {  // on the input's border curve, the square's sides
+      EXPECT_EQ(p.z(), 0.0) << p;
+      EXPECT_NEAR((std::min)({p.x(), 16 - p.x(), p.y(), 16 - p.y()}), 0.0, 1e-12) << p;
+    } else {
+      EXPECT_LT(std::abs(p.z()), 0.125) << p;  // at least half way back
+    }
+  }
+}
+
+TEST(TwoSidedFitter, ACoarseSphereInsideAFineOneMovesEveryVertexTowardIt) {
+  const Mesh input = loop_sphere(4);
+  const Mesh before = scaled(loop_sphere(1), 0.9);
+  Mesh output = before;
+  const Two_sided_fit_report report = Two_sided_fitter<Mesh>(input).fit(output);
+  EXPECT_EQ(report.refused_moves, 0u);
+  for (auto v : vertices(output))
+    EXPECT_LT(std::abs(radius(output.point(v)) - 1), std::abs(radius(before.point(v)) - 1));
+  EXPECT_LT(mean_distance_to_unit_sphere(output), 0.5 * mean_distance_to_unit_sphere(before));
+  EXPECT_TRUE(is_valid_triangle_mesh(output));
+}
+
+TEST(TwoSidedFitter, TwoFitsOfTheSameMeshesGiveTheSamePoints) {
+  const Mesh input = loop_sphere(4);
+  Mesh first = scaled(loop_sphere(1), 0.9), second = first;
+  Two_sided_fitter<Mesh>(input).fit(first);
+  Two_sided_fitter<Mesh>(input).fit(second);
+  for (auto v : vertices(first)) EXPECT_EQ(first.point(v), second.point(v));
+}
+
+// A 4 x 4 grid of points in z = 0 but for (1, 1), raised; `diagonal` splits the middle square
+// from (1, 1) to (2, 2) when true (as every other square), from (2, 1) to (1, 2) when false.
+Mesh raised_grid(bool diagonal) {
+  std::vector<Point> points;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) points.emplace_back(i, j, i == 1 && j == 1 ? 1 : 0);
+  const auto id = [](int i, int j) { return j * 4 + i; };
+  std::vector<std::array<int, 3>> triangles;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) {
+      if (i == 1 && j == 1 && !diagonal) {
+        triangles.push_back({id(i, j), id(i + 1, j), id(i, j + 1)});
+        triangles.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+        continue;
+      }
+      triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return from_triangles(points, triangles);
+}
+
+TEST(TwoSidedFitter, FlipsTheEdgeThatMakesTheOutputTheInput) {
+  const Mesh input = raised_grid(true);
+  Mesh output = raised_grid(false);
+  Two_sided_fit_options options;
+  options.rounds = 1;
+  const Two_sided_fit_report report = Two_sided_fitter<Mesh>(input, options).fit(output);
+  EXPECT_GE(report.flips, 1u);  // others may follow the moves made before the flips
+  const auto v = [](int i, int j) { return Mesh::Vertex_index(std::uint32_t(j * 4 + i)); };
+  EXPECT_TRUE(halfedge(v(1, 1), v(2, 2), output).second);
+  EXPECT_FALSE(halfedge(v(2, 1), v(1, 2), output).second);
+  EXPECT_TRUE(is_valid_triangle_mesh(output));
+}
+
+TEST(TwoSidedFitter, WithoutFlipsTheConnectivityStays) {
+  const Mesh input = raised_grid(true);
+  Mesh output = raised_grid(false);
+  Two_sided_fit_options options;
+  options.flips = false;
+  const Two_sided_fit_report report = Two_sided_fitter<Mesh>(input, options).fit(output);
+  EXPECT_EQ(report.flips, 0u);
+  const auto v = [](int i, int j) { return Mesh::Vertex_index(std::uint32_t(j * 4 + i)); };
+  EXPECT_TRUE(halfedge(v(2, 1), v(1, 2), output).second);
+}
+
+using cgal_policies::internal::Fit_guard;
+using cgal_policies::internal::Indexed_triangle;
+
+Indexed_triangle indexed(std::array<std::uint32_t, 3> ids, std::array<Eigen::Vector3d, 3> points) {
+  return {ids, points};
+}
+
+// Faces (a, b, c) and (b, a, d) of the quad a d b c; a flip makes (a, d, c) and (d, b, c).
+struct Quad {
+  Eigen::Vector3d a, b, c, d;
+  std::vector<Indexed_triangle> faces() const {
+    return {indexed({0, 1, 2}, {a, b, c}), indexed({1, 0, 3}, {b, a, d})};
+  }
+  std::vector<Indexed_triangle> flipped() const {
+    return {indexed({0, 3, 2}, {a, d, c}), indexed({3, 1, 2}, {d, b, c})};
+  }
+};
+
+TEST(FitGuard, RefusesAFlipThatFoldsAndAllowsOneThatDoesNot) {
+  const Eigen::Vector3d up(0, 0, 1);
+  // b lies inside the triangle a d c: the flipped faces would overlap, one of them upside down.
+  const Quad folding{{0, 0, 0}, {1, 0, 0}, {2, 1, 0}, {2, -1, 0}};
+  for (const double angle : {90.0, 180.0}) {  // at 180 degrees the overlap alone refuses it
+    Fit_guard guard(folding.faces(), angle, 1.0);
+    EXPECT_FALSE(guard.allows({0, 1}, folding.flipped(), {up, up})) << angle;
+  }
+  const Quad convex{{0, 0, 0}, {2, 0, 0}, {1, 1, 0}, {1, -1, 0}};
+  Fit_guard guard(convex.faces(), 90, 1.0);
+  EXPECT_TRUE(guard.allows({0, 1}, convex.flipped(), {up, up}));
+}
+
+TEST(FitGuard, RefusesAMoveThroughAnotherFace) {
+  const Indexed_triangle low = indexed({0, 1, 2}, {{{0, 0, 0}, {4, 0, 0}, {0, 4, 0}}});
+  const Indexed_triangle high = indexed({3, 4, 5}, {{{1, 1, 1}, {2, 1, 1}, {1, 2, 1}}});
+  Fit_guard guard({low, high}, 180, 1.0);
+  Indexed_triangle through = high;
+  through.points[0] = {1, 1, -1};  // its corner dives below the low face
+  EXPECT_FALSE(guard.allows({1}, {through}, {guard.reference(1)}));
+  Indexed_triangle above = high;
+  above.points[0] = {1, 1, 0.5};
+  EXPECT_TRUE(guard.allows({1}, {above}, {guard.reference(1)}));
+}
+
+}  // namespace
