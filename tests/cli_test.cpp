@@ -474,6 +474,70 @@ TEST_F(Cli, InterruptedRunsLeaveTheOldOutputOrTheCompleteNewOne) {
   EXPECT_GT(interrupted, 0);
 }
 
+// simplify `args` in a child process that stops half-way through writing OUT's temporary file,
+// which is a FIFO made beforehand under the name the child will give it (a FIFO holds 64 KiB
+// unread), then `signal`; its exit status once it has ended.
+int interrupt_while_writing(std::vector<std::string> args, const fs::path& out, int signal) {
+  const std::string app = std::string(CGAL_POLICIES_BIN_DIR) + "/simplify";
+  args.insert(args.begin(), app);
+  const std::vector<char*> argv = argv_of(args);
+  int go[2];
+  if (::pipe(go) != 0) return -1;
+  const pid_t child = ::fork();
+  if (child == 0) {
+    char byte;
+    ::close(go[1]);
+    if (::read(go[0], &byte, 1) != 1) ::_exit(126);  // not before the FIFO exists
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(null, STDOUT_FILENO);
+    ::dup2(null, STDERR_FILENO);
+    ::execv(app.c_str(), argv.data());
+    ::_exit(127);
+  }
+  ::close(go[0]);
+  const fs::path fifo = out.parent_path() / ("." + out.stem().string() + ".tmp-" +
+                                             std::to_string(child) + out.extension().string());
+  const bool made = ::mkfifo(fifo.c_str(), 0600) == 0;
+  const int reader = made ? ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK) : -1;
+  [[maybe_unused]] const ssize_t sent = ::write(go[1], "g", 1);
+  ::close(go[1]);
+  // The first bytes of the mesh: the writer is at work, and blocks once the FIFO is full.
+  bool writing = false;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  char bytes[16];
+  while (reader >= 0 && !writing && std::chrono::steady_clock::now() < deadline) {
+    writing = ::read(reader, bytes, sizeof bytes) > 0;
+    if (!writing) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  ::kill(child, writing ? signal : SIGKILL);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  if (reader >= 0) ::close(reader);  // only now: a writer alone would get SIGPIPE
+  return writing ? status : -1;
+}
+
+TEST_F(Cli, AnInterruptWhileWritingLeavesTheOldOutputAndNoTemporary) {
+  const bool with_viewer =
+      run("simplify", "--help").out.find("not in this build") == std::string::npos;
+  const fs::path out = file("cow.off"), png = file("cow.png");
+  const std::string old_output = "an older output";
+  for (const int signal : {SIGINT, SIGTERM}) {
+    std::ofstream(out, std::ios::binary) << old_output;
+    std::vector<std::string> args = {test_meshes::data_file("cow.obj"), out.string(), "0.5"};
+    // With the viewer, the picture is in place when the mesh is written: it must go too.
+    const bool picture = with_viewer && signal == SIGTERM;
+    if (picture) args.insert(args.end(), {"--snapshot", png.string(), "--size", "64x32"});
+    const int status = interrupt_while_writing(args, out, signal);
+    ASSERT_TRUE(WIFEXITED(status)) << signal << ": status " << status;
+    EXPECT_EQ(WEXITSTATUS(status), 128 + signal);
+    EXPECT_EQ(read_text(out), old_output);
+    EXPECT_FALSE(fs::exists(png));
+    for (const auto& entry : fs::directory_iterator(m_dir))
+      EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos)
+          << "temporary file left behind: " << entry.path();
+  }
+}
+
 // Three components: a tetrahedron (4 faces), an icosahedron (20), a 3 x 3 grid (18) and a lone
 // triangle (1), 43 faces.
 test_meshes::Mesh dirty_scan() {
