@@ -5,6 +5,7 @@
 #include "common/Progress_bar.h"
 #include "common/Removed_on_interrupt.h"
 #include "common/app_main.h"
+#include "common/atomic_write.h"
 #include "common/mesh_io.h"
 #include "common/mesh_measures.h"
 #include "common/peak_memory.h"
@@ -125,6 +126,7 @@ std::optional<Snapshot_request> take_snapshot_options(Command_line& cli) {
   // A .png is never a mesh, so never IN or OUT.
   if (std::filesystem::path(*png).extension() != ".png")
     throw App_error(exit_usage, *png + ": the snapshot must be a .png file");
+  check_output_folder(*png);
   Snapshot_request request{*png, {}};
   if (size) parse_snapshot_size(*size, request.settings);
   return request;

@@ -311,6 +311,19 @@ TEST_F(Cli, TheTargetIsCheckedBeforeTheInputIsRead) {
   EXPECT_NE(fast.err.find("--time-limit"), std::string::npos) << fast.err;
 }
 
+TEST_F(Cli, AMissingOutputFolderIsRefusedBeforeTheInputIsRead) {
+  // The input does not exist: a check made after reading would give code 3, not 4.
+  const fs::path in = file("missing.off"), folder = file("no_such_folder");
+  const fs::path out = folder / "out.off";
+  expect_failure(in.string() + " " + out.string() + " 0.5", 4, out, out);
+  const bool with_viewer =
+      run("simplify", "--help").out.find("not in this build") == std::string::npos;
+  if (!with_viewer) return;  // --snapshot is then bad usage, before reading too
+  const fs::path png = folder / "picture.png";
+  expect_failure(in.string() + " " + file("out.off").string() + " 0.5 --snapshot " + png.string(),
+                 4, png, file("out.off"));
+}
+
 TEST_F(Cli, ATimeLimitStopsTheRunWhereItIs) {
   const fs::path out = file("cow.off");
   // Long past at the first collapse: the queue alone takes longer to build.

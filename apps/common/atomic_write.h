@@ -16,6 +16,10 @@ namespace apps {
 void write_atomically(const std::string& path,
                       const std::function<bool(const std::string& temporary)>& write);
 
+// Throws App_error(exit_bad_output) naming `path` when its folder does not exist: the check
+// write_atomically makes, for the apps to make before they read any input.
+void check_output_folder(const std::string& path);
+
 }  // namespace apps
 
 #endif  // CGAL_POLICIES_APPS_ATOMIC_WRITE_H

@@ -149,6 +149,7 @@ void check_output_path(const std::string& input, const std::string& output, bool
   std::error_code ec;
   if (!force && fs::exists(output, ec) && fs::equivalent(input, output, ec))
     throw App_error(exit_usage, output + ": refusing to overwrite the input (use --force)");
+  check_output_folder(output);
 }
 
 void write_mesh_atomically(const Mesh& mesh, const std::string& path) {
