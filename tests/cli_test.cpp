@@ -516,7 +516,8 @@ int interrupt_while_writing(std::vector<std::string> args, const fs::path& out, 
   ::close(go[1]);
   // The first bytes of the mesh: the writer is at work, and blocks once the FIFO is full.
   bool writing = false;
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  // Generous: the sanitized Debug build reads, simplifies and draws the cow for about a minute.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(20);
   char bytes[16];
   while (reader >= 0 && !writing && std::chrono::steady_clock::now() < deadline) {
     writing = ::read(reader, bytes, sizeof bytes) > 0;
