@@ -7,6 +7,7 @@
 #include "common/mesh_io.h"
 #include "common/mesh_measures.h"
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -34,7 +35,8 @@ int run(int argc, char** argv) {
   const bool json = cli.take_flag("json");
   const std::vector<std::string> args = cli.positionals();
   if (args.size() != 2) throw App_error(exit_usage, "usage: mesh_error A B [--samples N] [--json]");
-  if (!(samples >= 1)) throw App_error(exit_usage, "--samples must be at least 1");
+  if (!(samples >= 1 && samples == std::floor(samples)))
+    throw App_error(exit_usage, "--samples must be a whole number of at least 1");
 
   const Mesh a = read_triangle_mesh(args[0]);
   const Mesh b = read_triangle_mesh(args[1]);

@@ -3,13 +3,16 @@
 #include "common/Command_line.h"
 #include "common/Json_object.h"
 #include "common/Progress_bar.h"
+#include "common/Removed_on_interrupt.h"
 #include "common/app_main.h"
+#include "common/atomic_write.h"
 #include "common/fitting.h"
 #include "common/mesh_io.h"
 #include "common/mesh_measures.h"
 #include "common/peak_memory.h"
 #include "common/policy_command_line.h"
 #include "common/policy_registry.h"
+#include "common/small_components.h"
 #include "common/smoothing.h"
 
 #include <cgal_policies/Border_pair_contraction.h>
@@ -40,8 +43,15 @@ void print_help() {
          "  --max-error X         also stop before the output's two-sided Hausdorff distance\n"
          "                        to IN would exceed X (a fraction of IN's diagonal); every\n"
          "                        edge-collapse policy, not fast\n"
+         "  --time-limit S        stop where the run is after S seconds (default 0, none);\n"
+         "                        every edge-collapse policy, not fast\n"
          "  --merge-distance T    first stitch border vertices of different border loops\n"
          "                        closer than T (a fraction of IN's diagonal; default 0, off)\n"
+         "  --min-component N     first drop every connected component of fewer than N faces\n"
+         "                        but the largest (a whole number; default 0, off)\n"
+         "  --drop-small-pieces   when no collapse is left short of the target, drop the\n"
+         "                        smallest connected components whole, smallest first, until\n"
+         "                        it is met; never the largest\n"
       << smoothing_help() << fit_help()
       << "  --json                print one JSON object on stdout\n"
          "  --measure             also measure the two-sided error against IN\n"
@@ -62,21 +72,40 @@ void print_help() {
          "Policy options (all lengths are fractions of IN's bounding-box diagonal):\n";
   for (const Policy_entry& p : policy_registry())
     std::cout << "  " << p.name << ": " << p.summary << '\n' << policy_options_help(p);
-  std::cout
-      << "\nExit codes: 0 done, 1 not done, 2 bad usage, 3 bad input, 4 output not written.\n";
+  std::cout << "\nExit codes: 0 done, 1 not done, 2 bad usage, 3 bad input, 4 output not written,\n"
+               "130 or 143 interrupted by SIGINT or SIGTERM (OUT is then never half-written).\n";
 }
 
-std::size_t target_face_count(std::optional<double> ratio, std::optional<double> faces,
-                              std::size_t input_faces) {
-  if (ratio && faces) throw App_error(exit_usage, "give a ratio or --faces, not both");
-  if (faces) {
-    if (*faces < 1 || *faces != std::floor(*faces))
-      throw App_error(exit_usage, "--faces must be a whole number of at least 1");
-    return std::size_t(*faces);
+// RATIO, --ratio or --faces, checked before the input is read.
+class Face_target {
+ public:
+  Face_target(std::optional<double> ratio, std::optional<double> faces) : m_ratio(ratio) {
+    if (ratio && faces) throw App_error(exit_usage, "give a ratio or --faces, not both");
+    if (faces) {
+      if (*faces < 1 || *faces != std::floor(*faces))
+        throw App_error(exit_usage, "--faces must be a whole number of at least 1");
+      m_faces = std::size_t(*faces);
+      return;
+    }
+    if (!ratio) throw App_error(exit_usage, "give RATIO, --ratio or --faces (see --help)");
+    if (!(*ratio > 0 && *ratio <= 1))
+      throw App_error(exit_usage, "RATIO or --ratio must be a number in (0, 1]");
   }
-  if (!ratio) throw App_error(exit_usage, "give RATIO, --ratio or --faces (see --help)");
-  if (!(*ratio > 0 && *ratio <= 1)) throw App_error(exit_usage, "the ratio must be in (0, 1]");
-  return std::size_t(std::llround(*ratio * double(input_faces)));
+  std::size_t of(std::size_t input_faces) const {
+    return m_ratio ? std::size_t(std::llround(*m_ratio * double(input_faces))) : m_faces;
+  }
+
+ private:
+  std::optional<double> m_ratio;
+  std::size_t m_faces = 0;
+};
+
+// A whole number of at least 0 for `option`, 0 when not given.
+std::size_t take_count(Command_line& cli, const std::string& option) {
+  const double value = cli.take_number(option).value_or(0);
+  if (!(value >= 0 && value == std::floor(value)))
+    throw App_error(exit_usage, "--" + option + " must be a whole number of at least 0");
+  return std::size_t(value);
 }
 
 // --snapshot OUT.png [--size WxH], checked before anything is read or written. The picture is
@@ -98,6 +127,7 @@ std::optional<Snapshot_request> take_snapshot_options(Command_line& cli) {
   // A .png is never a mesh, so never IN or OUT.
   if (std::filesystem::path(*png).extension() != ".png")
     throw App_error(exit_usage, *png + ": the snapshot must be a .png file");
+  check_output_folder(*png);
   Snapshot_request request{*png, {}};
   if (size) parse_snapshot_size(*size, request.settings);
   return request;
@@ -114,10 +144,13 @@ void write_mesh_and_snapshot([[maybe_unused]] const Mesh& original, const Mesh& 
                              [[maybe_unused]] const std::optional<Snapshot_request>& snapshot,
                              const std::string& output) {
 #ifdef CGAL_POLICIES_WITH_VIEWER
+  // An interrupt before OUT is in place removes the new picture too.
+  std::optional<Removed_on_interrupt> picture_without_mesh;
   if (snapshot) {
     Snapshot_settings settings = snapshot->settings;
     caption_snapshot(original, simplified, policy_name, settings);
     write_snapshot(original, simplified, settings, snapshot->png);
+    picture_without_mesh.emplace(snapshot->png);
   }
   try {
     write_mesh_atomically(simplified, output);
@@ -146,6 +179,14 @@ int run(int argc, char** argv) {
   const std::optional<double> max_error = cli.take_number("max-error");
   const double merge_distance = cli.take_number("merge-distance").value_or(0.0);
   if (!(merge_distance >= 0)) throw App_error(exit_usage, "--merge-distance must be at least 0");
+  settings.time_limit_seconds = cli.take_number("time-limit").value_or(0.0);
+  if (!(settings.time_limit_seconds >= 0))
+    throw App_error(exit_usage, "--time-limit must be a number of seconds of at least 0");
+  if (settings.time_limit_seconds > 0 && !policy->takes_time_limit)
+    throw App_error(exit_usage, "--time-limit needs an edge-collapse policy; " + policy->name +
+                                    " runs its own engine (try classic)");
+  const std::size_t min_component = take_count(cli, "min-component");
+  const bool drop_small_pieces = cli.take_flag("drop-small-pieces");
   const Smoothing_request smoothing = take_smoothing_options(cli);
   const Fit_request fit = take_fit_options(cli);
   const std::optional<Snapshot_request> snapshot = take_snapshot_options(cli);
@@ -163,7 +204,9 @@ int run(int argc, char** argv) {
     if (ratio) throw App_error(exit_usage, "give RATIO or --ratio, not both");
     ratio = parse_number(args[2], "RATIO");
   }
-  if (samples && !(*samples >= 1)) throw App_error(exit_usage, "--samples must be at least 1");
+  const Face_target target(ratio, faces);
+  if (samples && !(*samples >= 1 && *samples == std::floor(*samples)))
+    throw App_error(exit_usage, "--samples must be a whole number of at least 1");
   // The run's two-sided bound, which smoothing (when asked) and fitting keep.
   const double bound = two_sided_bound(*policy, settings);
   if (smoothing.bounded && !(bound > 0))
@@ -179,12 +222,13 @@ int run(int argc, char** argv) {
       std::cerr << "simplify: " << input << ": " << repair << '\n';
   const std::size_t input_faces = mesh.number_of_faces();
   const std::size_t input_vertices = mesh.number_of_vertices();
-  settings.target_faces = target_face_count(ratio, faces, input_faces);
+  settings.target_faces = target.of(input_faces);
   const Mesh original = measure || smoothing.bounded || snapshot || fit.enabled ? mesh : Mesh();
   // The pre-pass (docs/quadric_core.md, pair contraction) is not part of the simplification's time.
   const cgal_policies::Border_pair_contraction_report merge_report =
       cgal_policies::Border_pair_contraction(merge_distance)(mesh);
   if (merge_report.stitched_edges > 0) mesh.collect_garbage();
+  const Dropped_components specks = drop_components_smaller_than(mesh, min_component);
 
   Simplify_outcome outcome;
   {
@@ -193,6 +237,10 @@ int run(int argc, char** argv) {
     outcome = policy->run(mesh, settings);
   }
   mesh.collect_garbage();
+  const Dropped_components vanished =
+      drop_small_pieces && outcome.stop_reason == Stop_reason::no_collapse_left
+          ? drop_smallest_components_until(mesh, settings.target_faces)
+          : Dropped_components();
   const std::size_t refused_smoothing_moves = smooth_mesh(mesh, original, smoothing, bound);
   // After smoothing, so that the output the user gets is the fitted one.
   const Fit_outcome fitted =
@@ -214,6 +262,16 @@ int run(int argc, char** argv) {
   report.add("faces_removed_per_second", outcome.seconds > 0 ? removed / outcome.seconds : 0.0);
   report.add("peak_memory_mib", peak_rss_mib());
   report.add("stop_reason", to_string(outcome.stop_reason));
+  // Signed: dropping a last piece may overshoot the target.
+  report.add("target_gap_faces", static_cast<long long>(mesh.number_of_faces()) -
+                                     static_cast<long long>(settings.target_faces));
+  report.add("time_limit_seconds", settings.time_limit_seconds);
+  report.add("min_component", min_component);
+  report.add("dropped_components", specks.components);
+  report.add("dropped_component_faces", specks.faces);
+  report.add("drop_small_pieces", drop_small_pieces);
+  report.add("vanished_components", vanished.components);
+  report.add("vanished_faces", vanished.faces);
   report.add("max_error", settings.max_error);
   if (snapshot) report.add("snapshot", snapshot->png);
   report.add("smooth_iterations", smoothing.iterations);
@@ -248,6 +306,9 @@ int run(int argc, char** argv) {
     std::printf("%s: %zu -> %zu faces in %.3f s (%s)\n", policy->name.c_str(), input_faces,
                 std::size_t(mesh.number_of_faces()), outcome.seconds,
                 to_string(outcome.stop_reason));
+    if (specks.components + vanished.components > 0)
+      std::printf("dropped %zu small components (%zu faces) before, %zu (%zu faces) after\n",
+                  specks.components, specks.faces, vanished.components, vanished.faces);
     if (snapshot) std::printf("wrote %s\n", snapshot->png.c_str());
     if (measure)
       std::printf("two-sided Hausdorff %.4f%%, mean %.4f%% / %.4f%% of the diagonal\n",

@@ -10,6 +10,7 @@
 #include "common/Command_line.h"
 #include "common/app_main.h"
 #include "common/fitting.h"
+#include "common/atomic_write.h"
 #include "common/policy_command_line.h"
 #include "common/policy_registry.h"
 
@@ -146,10 +147,13 @@ std::string command_text(int argc, char** argv) {
   return text;
 }
 
+// A report interrupted while written keeps its previous version.
 void write_file(const fs::path& path, const std::string& text) {
-  std::ofstream out(path);
-  out << text;
-  if (!out.flush()) throw App_error(exit_bad_output, path.string() + ": cannot write");
+  write_atomically(path.string(), [&](const std::string& temporary) {
+    std::ofstream out(temporary);
+    out << text;
+    return bool(out.flush());
+  });
 }
 
 int run(int argc, char** argv) {

@@ -140,14 +140,16 @@ class Two_sided_fitter {
     double weight;
   };
 
-  // About max(kFitInputSamples, kFitSamplesPerFace * output faces) samples: a grid on every input
-  // face when that is too few, else the centroids of every k-th face, weighted by k.
+  // About max(kFitInputSamples, min(input faces, kFitSamplesPerFace * output faces)) samples: a
+  // grid on every input face when there are fewer faces, else the centroids of every k-th face,
+  // weighted by k.
   void sample_input(std::size_t output_faces) {
     m_samples.clear();
     const auto vpm = get(CGAL::vertex_point, *m_input_mesh);
     const std::size_t face_count = num_faces(*m_input_mesh);
     const std::size_t wanted =
-        (std::max)(internal::kFitInputSamples, internal::kFitSamplesPerFace * output_faces);
+        (std::max)(internal::kFitInputSamples,
+                   (std::min)(face_count, internal::kFitSamplesPerFace * output_faces));
     int level = 1;
     while (level < internal::kFitMaxInputLevel && face_count * std::size_t(level * level) < wanted)
       ++level;

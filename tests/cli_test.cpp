@@ -1,20 +1,29 @@
-// The apps from the outside: exit codes, one error line naming the file, no partial output, the
-// input never overwritten (README.md "Interfaces that others rely on").
+// The apps from the outside: exit codes, one error line naming the file, no partial output even
+// when interrupted, the input never overwritten (README.md "Interfaces that others rely on"); and
+// the removal of small components that simplify runs on dirty scans.
 #include "test_meshes.h"
+
+#include "common/mesh_io.h"
+#include "common/small_components.h"
 
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <random>
 #include <regex>
 #include <sstream>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -302,6 +311,346 @@ TEST_F(Cli, TheBunnyAtTenPercentWithGhReachesItsTarget) {
   EXPECT_NEAR(std::stod(faces[1]), 6945, 69.45);
   EXPECT_NE(r.out.find("\"valid\": true"), std::string::npos);
   EXPECT_NE(r.out.find("\"stop_reason\": \"target_reached\""), std::string::npos);
+}
+
+TEST_F(Cli, TheTargetIsCheckedBeforeTheInputIsRead) {
+  const fs::path in = file("missing.off"), out = file("out.off");
+  const std::vector<std::array<std::string, 2>> cases = {
+      {"--faces", "0"},          {"--faces", "2.5"},        {"--ratio", "0"},
+      {"--ratio", "1.5"},        {"--samples", "2.5"},      {"--time-limit", "-1"},
+      {"--min-component", "-3"}, {"--min-component", "2.5"}};
+  for (const auto& [option, value] : cases) {
+    const std::string target = option == "--faces" || option == "--ratio" ? "" : " --faces 10";
+    const Command_result r =
+        run("simplify", in.string() + " " + out.string() + " " + option + " " + value + target);
+    EXPECT_EQ(r.exit_code, 2) << option << " " << value << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(option), std::string::npos) << r.err;
+  }
+  const Command_result fast =
+      run("simplify", in.string() + " " + out.string() + " 0.5 --policy fast --time-limit 1");
+  EXPECT_EQ(fast.exit_code, 2) << fast.err;
+  EXPECT_NE(fast.err.find("--time-limit"), std::string::npos) << fast.err;
+}
+
+TEST_F(Cli, AMissingOutputFolderIsRefusedBeforeTheInputIsRead) {
+  // The input does not exist: a check made after reading would give code 3, not 4.
+  const fs::path in = file("missing.off"), folder = file("no_such_folder");
+  const fs::path out = folder / "out.off";
+  expect_failure(in.string() + " " + out.string() + " 0.5", 4, out, out);
+  const bool with_viewer =
+      run("simplify", "--help").out.find("not in this build") == std::string::npos;
+  if (!with_viewer) return;  // --snapshot is then bad usage, before reading too
+  const fs::path png = folder / "picture.png";
+  expect_failure(in.string() + " " + file("out.off").string() + " 0.5 --snapshot " + png.string(),
+                 4, png, file("out.off"));
+}
+
+TEST_F(Cli, ATimeLimitStopsTheRunWhereItIs) {
+  const fs::path out = file("cow.off");
+  // Long past at the first collapse: the queue alone takes longer to build.
+  const Command_result r = run("simplify", test_meshes::data_file("cow.obj") + " " + out.string() +
+                                               " 0.1 --time-limit 1e-9 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"stop_reason\": \"time_limit\""), std::string::npos) << r.out;
+  EXPECT_EQ(json_number(r.out, "output_faces"), json_number(r.out, "input_faces")) << r.out;
+  EXPECT_EQ(json_number(r.out, "time_limit_seconds"), 1e-9) << r.out;
+  EXPECT_EQ(apps::read_triangle_mesh(out.string()).number_of_faces(),
+            json_number(r.out, "input_faces"));
+  const Command_result unlimited = run("simplify", test_meshes::data_file("cow.obj") + " " +
+                                                       out.string() + " 0.1 --time-limit 0 --json");
+  ASSERT_EQ(unlimited.exit_code, 0) << unlimited.err;
+  EXPECT_NE(unlimited.out.find("\"stop_reason\": \"target_reached\""), std::string::npos);
+}
+
+TEST_F(Cli, HeaderCountsBeyondTheFileAreBadInputBeforeAnyAllocation) {
+  const fs::path out = file("out.off");
+  const fs::path off = write("huge.off", "OFF\n2000000000 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  std::string ply =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float "
+      "y\nproperty float z\nelement face 1000000000\nproperty list uchar int "
+      "vertex_indices\nend_header\n";
+  const float points[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  ply.append(reinterpret_cast<const char*>(points), sizeof points);
+  const int triangle[3] = {0, 1, 2};
+  ply += char(3);
+  ply.append(reinterpret_cast<const char*>(triangle), sizeof triangle);
+  const fs::path binary_ply = write("huge.ply", ply);
+  std::string stl(80, ' ');
+  const std::uint32_t triangles = 100000000;  // little-endian, as the format wants
+  for (int byte = 0; byte < 4; ++byte) stl += char((triangles >> (8 * byte)) & 0xff);
+  const fs::path binary_stl = write("huge.stl", stl);
+  for (const fs::path& in : {off, binary_ply, binary_stl}) {
+    expect_failure(in.string() + " " + out.string() + " 0.5", 3, in, out);
+    EXPECT_NE(run("simplify", in.string() + " " + out.string() + " 0.5").err.find("declares"),
+              std::string::npos)
+        << in;
+  }
+}
+
+TEST_F(Cli, HeaderCountsThatFitTheFileAreRead) {
+  const fs::path out = file("out.off");
+  const fs::path ascii_ply = write("tet.ply",
+                                   "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n"
+                                   "property float y\nproperty float z\nelement face 4\nproperty "
+                                   "list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 "
+                                   "0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3");
+  std::string stl(80, ' ');
+  stl += std::string("\x04\x00\x00\x00", 4);
+  const float corners[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const int faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  for (const auto& f : faces) {
+    const float normal[3] = {0, 0, 0};
+    stl.append(reinterpret_cast<const char*>(normal), sizeof normal);
+    for (int corner : f) stl.append(reinterpret_cast<const char*>(corners[corner]), 12);
+    stl += std::string(2, '\0');  // the attribute byte count
+  }
+  const fs::path binary_stl = write("tet.stl", stl);
+  for (const fs::path& in : {write("tet.off", kTetrahedronOff), ascii_ply, binary_stl}) {
+    const Command_result r = run("simplify", in.string() + " " + out.string() + " 1 --json");
+    ASSERT_EQ(r.exit_code, 0) << in << ": " << r.err;
+    EXPECT_EQ(json_number(r.out, "output_faces"), 4) << in;
+  }
+}
+
+// The argv execv wants, pointing into `args`.
+std::vector<char*> argv_of(std::vector<std::string>& args) {
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  return argv;
+}
+
+// simplify ARGS in a child process, its output thrown away, killed by `signal` after `delay`
+// (or not at all with a zero signal); its exit status.
+int run_and_kill(std::vector<std::string> args, int signal, std::chrono::microseconds delay) {
+  const std::string app = std::string(CGAL_POLICIES_BIN_DIR) + "/simplify";
+  args.insert(args.begin(), app);
+  const std::vector<char*> argv = argv_of(args);
+  const pid_t child = ::fork();
+  if (child == 0) {
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(null, STDOUT_FILENO);
+    ::dup2(null, STDERR_FILENO);
+    ::execv(app.c_str(), argv.data());
+    ::_exit(127);
+  }
+  if (signal != 0) {
+    std::this_thread::sleep_for(delay);
+    ::kill(child, signal);
+  }
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return status;
+}
+
+// How many times InterruptedRunsLeaveTheOldOutputOrTheCompleteNewOne kills simplify:
+// scripts/kill_test.sh N runs it N times.
+int kill_count() {
+  const char* count = std::getenv("CGAL_POLICIES_KILLS");
+  return count ? std::atoi(count) : 40;
+}
+
+TEST_F(Cli, InterruptedRunsLeaveTheOldOutputOrTheCompleteNewOne) {
+  // The cow: short enough for tens of runs; OFF, the slowest format to write.
+  const std::string cow = test_meshes::data_file("cow.obj");
+  const fs::path out = file("cow.off"), reference = file("reference.off");
+  const std::vector<std::string> options = {"0.5", "--quiet"};
+  std::vector<std::string> args = {cow, reference.string()};
+  args.insert(args.end(), options.begin(), options.end());
+  const auto start = std::chrono::steady_clock::now();
+  const int reference_status = run_and_kill(args, 0, {});
+  const auto whole_run = std::chrono::duration_cast<std::chrono::microseconds>(
+      std::chrono::steady_clock::now() - start);
+  ASSERT_TRUE(WIFEXITED(reference_status) && WEXITSTATUS(reference_status) == 0);
+  const std::string complete = read_text(reference);
+  // The mesh the run writes is whole: every face of the target is there.
+  EXPECT_EQ(apps::read_triangle_mesh(reference.string()).number_of_faces(),
+            std::llround(0.5 * double(apps::read_triangle_mesh(cow).number_of_faces())));
+
+  const std::string old_output = "an older output";
+  args[1] = out.string();
+  std::mt19937 random(15);
+  // Over the whole run and a little after, so that every stage is hit: reading, simplifying,
+  // writing the temporary, renaming it, exiting.
+  std::uniform_int_distribution<long> delay_us(0, whole_run.count() * 11 / 10);
+  int unguarded = 0, interrupted = 0, finished = 0, replaced = 0;
+  for (int kill = 0; kill < kill_count(); ++kill) {
+    std::ofstream(out, std::ios::binary) << old_output;
+    const int signal = kill % 2 ? SIGTERM : SIGINT;
+    const int status = run_and_kill(args, signal, std::chrono::microseconds(delay_us(random)));
+    const std::string left = read_text(out);
+    if (WIFSIGNALED(status)) {
+      // Before main() installed the handlers: nothing was written yet.
+      ++unguarded;
+      EXPECT_EQ(WTERMSIG(status), signal) << "kill " << kill;
+      EXPECT_EQ(left, old_output) << "kill " << kill;
+      continue;
+    }
+    const int code = WEXITSTATUS(status);
+    if (code == 0) {
+      ++finished;
+      EXPECT_EQ(left, complete) << "kill " << kill;
+    } else {
+      ++interrupted;
+      EXPECT_EQ(code, 128 + signal) << "kill " << kill;
+      EXPECT_TRUE(left == old_output || left == complete)
+          << "kill " << kill << ": " << left.size() << " bytes";
+    }
+    replaced += left == complete;
+    for (const auto& entry : fs::directory_iterator(m_dir))
+      ASSERT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos)
+          << "kill " << kill << " left " << entry.path();
+  }
+  std::printf(
+      "%d kills: %d before main(), %d interrupted (%d after the new output was in place), %d "
+      "finished\n",
+      kill_count(), unguarded, interrupted, replaced - finished, finished);
+  EXPECT_GT(interrupted, 0);
+}
+
+// simplify `args` in a child process that stops half-way through writing OUT's temporary file,
+// which is a FIFO made beforehand under the name the child will give it (a FIFO holds 64 KiB
+// unread), then `signal`; its exit status once it has ended.
+int interrupt_while_writing(std::vector<std::string> args, const fs::path& out, int signal) {
+  const std::string app = std::string(CGAL_POLICIES_BIN_DIR) + "/simplify";
+  args.insert(args.begin(), app);
+  const std::vector<char*> argv = argv_of(args);
+  int go[2];
+  if (::pipe(go) != 0) return -1;
+  const pid_t child = ::fork();
+  if (child == 0) {
+    char byte;
+    ::close(go[1]);
+    if (::read(go[0], &byte, 1) != 1) ::_exit(126);  // not before the FIFO exists
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(null, STDOUT_FILENO);
+    ::dup2(null, STDERR_FILENO);
+    ::execv(app.c_str(), argv.data());
+    ::_exit(127);
+  }
+  ::close(go[0]);
+  const fs::path fifo = out.parent_path() / ("." + out.stem().string() + ".tmp-" +
+                                             std::to_string(child) + out.extension().string());
+  const bool made = ::mkfifo(fifo.c_str(), 0600) == 0;
+  const int reader = made ? ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK) : -1;
+  [[maybe_unused]] const ssize_t sent = ::write(go[1], "g", 1);
+  ::close(go[1]);
+  // The first bytes of the mesh: the writer is at work, and blocks once the FIFO is full.
+  bool writing = false;
+  // Generous: the sanitized Debug build reads, simplifies and draws the cow for about a minute.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(20);
+  char bytes[16];
+  while (reader >= 0 && !writing && std::chrono::steady_clock::now() < deadline) {
+    writing = ::read(reader, bytes, sizeof bytes) > 0;
+    if (!writing) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  ::kill(child, writing ? signal : SIGKILL);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  if (reader >= 0) ::close(reader);  // only now: a writer alone would get SIGPIPE
+  return writing ? status : -1;
+}
+
+TEST_F(Cli, AnInterruptWhileWritingLeavesTheOldOutputAndNoTemporary) {
+  const bool with_viewer =
+      run("simplify", "--help").out.find("not in this build") == std::string::npos;
+  const fs::path out = file("cow.off"), png = file("cow.png");
+  const std::string old_output = "an older output";
+  for (const int signal : {SIGINT, SIGTERM}) {
+    std::ofstream(out, std::ios::binary) << old_output;
+    std::vector<std::string> args = {test_meshes::data_file("cow.obj"), out.string(), "0.5"};
+    // With the viewer, the picture is in place when the mesh is written: it must go too.
+    const bool picture = with_viewer && signal == SIGTERM;
+    if (picture) args.insert(args.end(), {"--snapshot", png.string(), "--size", "64x32"});
+    const int status = interrupt_while_writing(args, out, signal);
+    ASSERT_TRUE(WIFEXITED(status)) << signal << ": status " << status;
+    EXPECT_EQ(WEXITSTATUS(status), 128 + signal);
+    EXPECT_EQ(read_text(out), old_output);
+    EXPECT_FALSE(fs::exists(png));
+    for (const auto& entry : fs::directory_iterator(m_dir))
+      EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos)
+          << "temporary file left behind: " << entry.path();
+  }
+}
+
+// Three components: a tetrahedron (4 faces), an icosahedron (20), a 3 x 3 grid (18) and a lone
+// triangle (1), 43 faces.
+test_meshes::Mesh dirty_scan() {
+  test_meshes::Mesh mesh = test_meshes::tetrahedron();
+  CGAL::copy_face_graph(test_meshes::icosahedron(), mesh);
+  CGAL::copy_face_graph(test_meshes::flat_grid(3), mesh);
+  CGAL::copy_face_graph(test_meshes::from_triangles({{5, 5, 5}, {6, 5, 5}, {5, 6, 5}}, {{0, 1, 2}}),
+                        mesh);
+  return mesh;
+}
+
+TEST(SmallComponents, DroppedBelowASizeButTheLargest) {
+  test_meshes::Mesh mesh = dirty_scan();
+  ASSERT_EQ(mesh.number_of_faces(), 43u);
+  const apps::Dropped_components specks = apps::drop_components_smaller_than(mesh, 5);
+  EXPECT_EQ(specks.components, 2u);
+  EXPECT_EQ(specks.faces, 5u);
+  EXPECT_EQ(mesh.number_of_faces(), 38u);
+  EXPECT_FALSE(mesh.has_garbage());
+  EXPECT_TRUE(test_meshes::is_valid_triangle_mesh(mesh));
+  const apps::Dropped_components all = apps::drop_components_smaller_than(mesh, 1000);
+  EXPECT_EQ(all.components, 1u);
+  EXPECT_EQ(all.faces, 18u);
+  EXPECT_EQ(mesh.number_of_faces(), 20u);  // the icosahedron, the largest, stays
+  EXPECT_EQ(apps::drop_components_smaller_than(mesh, 0).components, 0u);
+}
+
+TEST(SmallComponents, DroppedSmallestFirstUntilTheTarget) {
+  test_meshes::Mesh mesh = dirty_scan();
+  const apps::Dropped_components none = apps::drop_smallest_components_until(mesh, 43);
+  EXPECT_EQ(none.components, 0u);
+  EXPECT_EQ(mesh.number_of_faces(), 43u);
+  const apps::Dropped_components some = apps::drop_smallest_components_until(mesh, 40);
+  EXPECT_EQ(some.components, 2u);  // the triangle, then the tetrahedron
+  EXPECT_EQ(some.faces, 5u);
+  EXPECT_EQ(mesh.number_of_faces(), 38u);
+  const apps::Dropped_components rest = apps::drop_smallest_components_until(mesh, 0);
+  EXPECT_EQ(rest.components, 1u);
+  EXPECT_EQ(mesh.number_of_faces(), 20u);
+  EXPECT_TRUE(test_meshes::is_valid_triangle_mesh(mesh));
+}
+
+// Two tetrahedra, which no collapse can simplify, and nothing else.
+const char* const kTwoTetrahedraOff =
+    "OFF\n8 8 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n5 0 0\n6 0 0\n5 1 0\n5 0 1\n"
+    "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n3 4 6 5\n3 4 5 7\n3 4 7 6\n3 5 6 7\n";
+
+TEST_F(Cli, SmallPiecesAreDroppedOnlyWhenAsked) {
+  const fs::path in = write("two.off", kTwoTetrahedraOff), out = file("out.off");
+  const std::string io = in.string() + " " + out.string() + " --json --quiet --faces ";
+  const Command_result stuck = run("simplify", io + "4");
+  ASSERT_EQ(stuck.exit_code, 0) << stuck.err;
+  EXPECT_NE(stuck.out.find("\"stop_reason\": \"no_collapse_left\""), std::string::npos);
+  EXPECT_EQ(json_number(stuck.out, "output_faces"), 8);
+  EXPECT_EQ(json_number(stuck.out, "target_gap_faces"), 4);
+  EXPECT_EQ(json_number(stuck.out, "vanished_components"), 0);
+
+  const Command_result dropped = run("simplify", io + "4 --drop-small-pieces");
+  ASSERT_EQ(dropped.exit_code, 0) << dropped.err;
+  EXPECT_NE(dropped.out.find("\"stop_reason\": \"no_collapse_left\""), std::string::npos);
+  EXPECT_EQ(json_number(dropped.out, "output_faces"), 4);
+  EXPECT_EQ(json_number(dropped.out, "target_gap_faces"), 0);
+  EXPECT_EQ(json_number(dropped.out, "vanished_components"), 1);
+  EXPECT_EQ(json_number(dropped.out, "vanished_faces"), 4);
+  EXPECT_EQ(apps::read_triangle_mesh(out.string()).number_of_faces(), 4u);
+
+  const Command_result last = run("simplify", io + "1 --drop-small-pieces");
+  ASSERT_EQ(last.exit_code, 0) << last.err;
+  EXPECT_EQ(json_number(last.out, "output_faces"), 4);  // the last piece stays
+  EXPECT_EQ(json_number(last.out, "target_gap_faces"), 3);
+
+  const Command_result before = run("simplify", io + "8 --min-component 5");
+  ASSERT_EQ(before.exit_code, 0) << before.err;
+  EXPECT_EQ(json_number(before.out, "min_component"), 5);
+  EXPECT_EQ(json_number(before.out, "dropped_components"), 1);
+  EXPECT_EQ(json_number(before.out, "dropped_component_faces"), 4);
+  EXPECT_EQ(json_number(before.out, "output_faces"), 4);
 }
 
 }  // namespace

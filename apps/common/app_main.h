@@ -1,9 +1,10 @@
 // The outer frame of every app's main(): turns any failure into one line on stderr, "<app>: <file>:
-// <cause>", and the exit code of README.md.
+// <cause>", and the exit code of README.md; an interrupt exits 130 or 143 (Removed_on_interrupt).
 #ifndef CGAL_POLICIES_APPS_APP_MAIN_H
 #define CGAL_POLICIES_APPS_APP_MAIN_H
 
 #include "App_error.h"
+#include "Removed_on_interrupt.h"
 
 #include <exception>
 #include <functional>
@@ -13,6 +14,7 @@
 namespace apps {
 
 inline int guarded_main(const char* app, const std::function<int()>& body) {
+  install_interrupt_handlers(app);
   try {
     return body();
   } catch (const App_error& e) {

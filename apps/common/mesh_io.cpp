@@ -1,6 +1,8 @@
 #include "mesh_io.h"
 
 #include "App_error.h"
+#include "atomic_write.h"
+#include "declared_counts.h"
 
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -12,7 +14,6 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/helpers.h>
 
-#include <unistd.h>
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -38,10 +39,6 @@ std::string lower_extension(const std::string& path) {
 
 [[noreturn]] void fail_input(const std::string& path, const std::string& cause) {
   throw App_error(exit_bad_input, path + ": " + cause);
-}
-
-[[noreturn]] void fail_output(const std::string& path, const std::string& cause) {
-  throw App_error(exit_bad_output, path + ": " + cause);
 }
 
 void check_readable_file(const std::string& path) {
@@ -104,6 +101,7 @@ bool has_supported_mesh_extension(const std::string& path) {
 
 Mesh read_triangle_mesh(const std::string& path, Read_report* report) {
   check_readable_file(path);
+  check_declared_counts(path);
   std::vector<Point> points;
   std::vector<Polygon> polygons;
   bool parsed = false;
@@ -151,36 +149,13 @@ void check_output_path(const std::string& input, const std::string& output, bool
   std::error_code ec;
   if (!force && fs::exists(output, ec) && fs::equivalent(input, output, ec))
     throw App_error(exit_usage, output + ": refusing to overwrite the input (use --force)");
+  check_output_folder(output);
 }
 
 void write_mesh_atomically(const Mesh& mesh, const std::string& path) {
-  const fs::path target(path);
-  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  std::error_code ec;
-  if (!fs::is_directory(folder, ec)) fail_output(path, "cannot write: no such folder");
-  // The temporary name keeps the extension: CGAL picks the format from it.
-  const fs::path temporary = folder / ("." + target.stem().string() + ".tmp-" +
-                                       std::to_string(::getpid()) + target.extension().string());
-  {
-    std::ofstream probe(temporary);
-    if (!probe) fail_output(path, std::string("cannot write: ") + std::strerror(errno));
-  }
-  bool written = false;
-  try {
-    written = CGAL::IO::write_polygon_mesh(temporary.string(), mesh,
-                                           CGAL::parameters::stream_precision(17));
-  } catch (const std::exception&) {
-    written = false;
-  }
-  if (!written) {
-    fs::remove(temporary, ec);
-    fail_output(path, "cannot write: the writer failed (disk full?)");
-  }
-  fs::rename(temporary, target, ec);
-  if (ec) {
-    fs::remove(temporary, ec);
-    fail_output(path, "cannot write: " + ec.message());
-  }
+  write_atomically(path, [&](const std::string& temporary) {
+    return CGAL::IO::write_polygon_mesh(temporary, mesh, CGAL::parameters::stream_precision(17));
+  });
 }
 
 }  // namespace apps

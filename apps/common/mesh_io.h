@@ -19,10 +19,11 @@ bool has_supported_mesh_extension(const std::string& path);
 // Reads a triangle mesh; throws App_error(exit_bad_input, "<path>: <cause>") when it cannot.
 Mesh read_triangle_mesh(const std::string& path, Read_report* report = nullptr);
 
-// Throws App_error(exit_usage) when `output` cannot be a mesh file or would overwrite `input`.
+// Throws App_error(exit_usage) when `output` cannot be a mesh file or would overwrite `input`,
+// App_error(exit_bad_output) when its folder does not exist.
 void check_output_path(const std::string& input, const std::string& output, bool force);
 
-// Writes by extension with full precision through a temporary file renamed into place; throws
+// Writes by extension with full precision, all or nothing (write_atomically); throws
 // App_error(exit_bad_output) and leaves no file behind when that fails.
 void write_mesh_atomically(const Mesh& mesh, const std::string& path);
 

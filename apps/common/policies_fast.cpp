@@ -45,6 +45,7 @@ std::vector<Policy_entry> fast_policies() {
                     fast_options().options(), run_fast};
   // The bound certifies edge collapses one by one; the engine's passes have no such hook.
   fast.takes_error_bound = false;
+  fast.takes_time_limit = false;
   return {fast};
 }
 

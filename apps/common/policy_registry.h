@@ -36,7 +36,7 @@ struct Simplify_settings {
   double max_normal_angle_deg = 90;  // flip prevention of our own policies (docs/quadric_core.md)
   double max_error = 0;  // two-sided Hausdorff bound, a fraction of the input's diagonal; 0: none
   // The edge-collapse policies stop where they are after this many seconds (0: no limit); the
-  // others finish in seconds and do not look at it.
+  // others (Policy_entry::takes_time_limit) finish in seconds and do not look at it.
   double time_limit_seconds = 0;
   Option_values options;                               // the policy's options, defaults filled in
   std::function<void(std::size_t faces)> on_progress;  // called now and then; may be empty
@@ -67,6 +67,7 @@ struct Policy_entry {
   std::vector<Policy_option> options;
   Run run;
   bool takes_error_bound = true;  // whether --max-error can bound it
+  bool takes_time_limit = true;   // whether it stops at Simplify_settings::time_limit_seconds
   std::string bound_option;       // the option that is its own two-sided bound, if any
 };
 

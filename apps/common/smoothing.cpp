@@ -12,7 +12,7 @@ Smoothing_request take_smoothing_options(Command_line& cli) {
   Smoothing_request request;
   if (const auto n = cli.take_number("smooth")) {
     if (*n < 0 || *n != std::floor(*n))
-      throw App_error(exit_usage, "--smooth must be a whole number of iterations");
+      throw App_error(exit_usage, "--smooth must be a whole number of iterations, at least 0");
     request.iterations = int(*n);
   }
   if (const auto rate = cli.take_number("smooth-rate")) {

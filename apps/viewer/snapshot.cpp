@@ -3,13 +3,13 @@
 #include "Offscreen_context.h"
 #include "Surface_distance.h"
 #include "common/App_error.h"
+#include "common/atomic_write.h"
 #include "common/mesh_measures.h"
 
 #include <stb_image_write.h>
 
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
 
 namespace apps {
 
@@ -70,18 +70,10 @@ void write_snapshot(const Mesh& original, const Mesh& simplified, const Snapshot
     pixels = context.rgb_pixels();
   }
 
-  const std::string temporary = png_path + ".part";
-  if (!stbi_write_png(temporary.c_str(), settings.width, settings.height, 3, pixels.data(),
-                      settings.width * 3)) {
-    std::remove(temporary.c_str());
-    throw App_error(exit_bad_output, png_path + ": cannot write the PNG");
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, png_path, error);
-  if (error) {
-    std::remove(temporary.c_str());
-    throw App_error(exit_bad_output, png_path + ": " + error.message());
-  }
+  write_atomically(png_path, [&](const std::string& temporary) {
+    return stbi_write_png(temporary.c_str(), settings.width, settings.height, 3, pixels.data(),
+                          settings.width * 3) != 0;
+  });
 }
 
 }  // namespace apps
