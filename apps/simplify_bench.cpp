@@ -9,8 +9,8 @@
 #include "common/App_error.h"
 #include "common/Command_line.h"
 #include "common/app_main.h"
-#include "common/fitting.h"
 #include "common/atomic_write.h"
+#include "common/fitting.h"
 #include "common/policy_command_line.h"
 #include "common/policy_registry.h"
 
