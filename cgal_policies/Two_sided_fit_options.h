@@ -2,6 +2,8 @@
 #ifndef CGAL_POLICIES_TWO_SIDED_FIT_OPTIONS_H
 #define CGAL_POLICIES_TWO_SIDED_FIT_OPTIONS_H
 
+#include <cstddef>
+
 namespace cgal_policies {
 
 struct Two_sided_fit_options {
@@ -10,8 +12,9 @@ struct Two_sided_fit_options {
   double trust_fraction = 0.3;       // a vertex moves at most this much of its mean edge per round
   bool target_mean = false;          // reweight toward the mean (L1) distance rather than the RMS
   double max_normal_angle_deg = 90;  // no face normal turns more than this during the pass
-  double tolerance =
-      0;  // > 0: bounded mode, a two-sided bound as a fraction of the input's diagonal
+  std::size_t min_input_samples = 100000;  // the input is sampled at least this densely
+  // > 0: bounded mode, a two-sided bound as a fraction of the input's diagonal
+  double tolerance = 0;
 };
 
 }  // namespace cgal_policies

@@ -23,6 +23,7 @@
 //                         vertex, > 0 (default 0.3)
 //   target_mean           reweight toward the mean distance rather than the RMS (default false)
 //   max_normal_angle_deg  in (0, 180] (default 90)
+//   min_input_samples     the input is sampled at least this densely, >= 1 (default 100000)
 //   tolerance             >= 0, a fraction of the input's bounding-box diagonal; 0: unbounded
 // The input must outlive the fitter; output and input are triangle meshes of the same type, their
 // points read through their vertex_point maps. Deterministic: the same meshes give the same bytes.
@@ -65,8 +66,7 @@
 namespace cgal_policies {
 
 namespace internal {
-// The input is sampled at least this densely, whatever its face count (docs/fitting.md).
-constexpr std::size_t kFitInputSamples = 100000;
+// Input samples wanted per output face, up to one per input face (docs/fitting.md).
 constexpr std::size_t kFitSamplesPerFace = 32;
 constexpr int kFitMaxInputLevel = 6;
 constexpr int kFitOutputLevel = 3;  // samples per output face: its square
@@ -102,6 +102,7 @@ class Two_sided_fitter {
     CGAL_precondition(options.trust_fraction > 0);
     CGAL_precondition(options.max_normal_angle_deg > 0 && options.max_normal_angle_deg <= 180);
     CGAL_precondition(options.tolerance >= 0);
+    CGAL_precondition(options.min_input_samples >= 1);
   }
 
   Two_sided_fit_report fit(TriangleMesh& output) {
@@ -140,7 +141,7 @@ class Two_sided_fitter {
     double weight;
   };
 
-  // About max(kFitInputSamples, min(input faces, kFitSamplesPerFace * output faces)) samples: a
+  // About max(min_input_samples, min(input faces, kFitSamplesPerFace * output faces)) samples: a
   // grid on every input face when there are fewer faces, else the centroids of every k-th face,
   // weighted by k.
   void sample_input(std::size_t output_faces) {
@@ -148,7 +149,7 @@ class Two_sided_fitter {
     const auto vpm = get(CGAL::vertex_point, *m_input_mesh);
     const std::size_t face_count = num_faces(*m_input_mesh);
     const std::size_t wanted =
-        (std::max)(internal::kFitInputSamples,
+        (std::max)(m_options.min_input_samples,
                    (std::min)(face_count, internal::kFitSamplesPerFace * output_faces));
     int level = 1;
     while (level < internal::kFitMaxInputLevel && face_count * std::size_t(level * level) < wanted)

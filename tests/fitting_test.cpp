@@ -49,11 +49,18 @@ Mesh scaled(Mesh mesh, double factor) {
   return mesh;
 }
 
+// Tiny meshes need far fewer input samples than the default, which suits real meshes.
+Two_sided_fit_options few_samples() {
+  Two_sided_fit_options options;
+  options.min_input_samples = 5000;
+  return options;
+}
+
 TEST(TwoSidedFitter, ACoarsePlaneOnThePlaneItApproximatesStaysExactlyAsItIs) {
   const Mesh input = flat_grid(16);
   const Mesh before = scaled(flat_grid(4), 4);  // the same square, coarser: no distance to lower
   Mesh output = before;
-  const Two_sided_fit_report report = Two_sided_fitter<Mesh>(input).fit(output);
+  const Two_sided_fit_report report = Two_sided_fitter<Mesh>(input, few_samples()).fit(output);
   EXPECT_EQ(report.rounds, 0);  // the first round lowered nothing and was undone
   EXPECT_EQ(report.flips, 0u);
   for (auto v : vertices(output)) EXPECT_EQ(output.point(v), before.point(v));
@@ -69,7 +76,7 @@ TEST(TwoSidedFitter, ACoarsePlaneLiftedOffItsPlaneComesBackToIt) {
       const Point& p = output.point(v);
       output.point(v) = Point(p.x(), p.y(), 0.25);
     }
-  const Two_sided_fit_report report = Two_sided_fitter<Mesh>(input).fit(output);
+  const Two_sided_fit_report report = Two_sided_fitter<Mesh>(input, few_samples()).fit(output);
   EXPECT_GE(report.rounds, 1);
   EXPECT_TRUE(is_valid_triangle_mesh(output));
   EXPECT_EQ(output.number_of_faces(), 32u);
@@ -85,10 +92,10 @@ TEST(TwoSidedFitter, ACoarsePlaneLiftedOffItsPlaneComesBackToIt) {
 }
 
 TEST(TwoSidedFitter, ACoarseSphereInsideAFineOneMovesEveryVertexTowardIt) {
-  const Mesh input = loop_sphere(4);
+  const Mesh input = loop_sphere(3);
   const Mesh before = scaled(loop_sphere(1), 0.9);
   Mesh output = before;
-  const Two_sided_fit_report report = Two_sided_fitter<Mesh>(input).fit(output);
+  const Two_sided_fit_report report = Two_sided_fitter<Mesh>(input, few_samples()).fit(output);
   EXPECT_EQ(report.refused_moves, 0u);
   for (auto v : vertices(output))
     EXPECT_LT(std::abs(radius(output.point(v)) - 1), std::abs(radius(before.point(v)) - 1));
@@ -97,10 +104,10 @@ TEST(TwoSidedFitter, ACoarseSphereInsideAFineOneMovesEveryVertexTowardIt) {
 }
 
 TEST(TwoSidedFitter, TwoFitsOfTheSameMeshesGiveTheSamePoints) {
-  const Mesh input = loop_sphere(4);
+  const Mesh input = loop_sphere(3);
   Mesh first = scaled(loop_sphere(1), 0.9), second = first;
-  Two_sided_fitter<Mesh>(input).fit(first);
-  Two_sided_fitter<Mesh>(input).fit(second);
+  Two_sided_fitter<Mesh>(input, few_samples()).fit(first);
+  Two_sided_fitter<Mesh>(input, few_samples()).fit(second);
   for (auto v : vertices(first)) EXPECT_EQ(first.point(v), second.point(v));
 }
 
