@@ -15,7 +15,6 @@
 #include "common/policy_registry.h"
 
 #include <algorithm>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -117,10 +116,8 @@ std::vector<Policy_entry> select_policies(const std::optional<std::string>& list
   std::vector<Policy_entry> chosen;
   for (const std::string& name : split_list(*list)) {
     // "P+fit": P, then the fitting pass.
-    const bool fitted =
-        name.size() > std::strlen(kFitSuffix) &&
-        name.compare(name.size() - std::strlen(kFitSuffix), std::string::npos, kFitSuffix) == 0;
-    const std::string base = fitted ? name.substr(0, name.size() - std::strlen(kFitSuffix)) : name;
+    const std::optional<std::string> fitted = fitted_base(name);
+    const std::string base = fitted.value_or(name);
     const auto it =
         std::find_if(all.begin(), all.end(), [&](const Policy_entry& p) { return p.name == base; });
     if (it == all.end())
@@ -211,16 +208,15 @@ int run(int argc, char** argv) {
   }
   // The "P+fit" rows: beside every policy with --fit, beside the preset's choice without.
   std::vector<std::string> fitted;
-  for (const Policy_entry& p : plan.policies)
-    if (fit_all || (preset_name && !policy_list && [&] {
-          const auto& names = find_bench_preset(*preset_name)->fitted;
-          return std::find(names.begin(), names.end(), p.name) != names.end();
-        }()))
-      fitted.push_back(p.name);
+  if (fit_all)
+    for (const Policy_entry& p : plan.policies) fitted.push_back(p.name);
+  else if (preset_name && !policy_list)
+    fitted = find_bench_preset(*preset_name)->fitted;
   for (const std::string& name : fitted) {
     const auto at = std::find_if(plan.policies.begin(), plan.policies.end(),
                                  [&](const Policy_entry& p) { return p.name == name; });
-    if (std::none_of(plan.policies.begin(), plan.policies.end(),
+    if (at != plan.policies.end() &&
+        std::none_of(plan.policies.begin(), plan.policies.end(),
                      [&](const Policy_entry& p) { return p.name == name + kFitSuffix; }))
       plan.policies.insert(at + 1, with_fit(*at));
   }

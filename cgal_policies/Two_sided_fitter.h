@@ -117,7 +117,7 @@ class Two_sided_fitter {
     for (int round = 0; round < m_options.rounds; ++round) {
       Two_sided_fit_report step;
       pass.begin_round();
-      if (!pass.fit_round(step)) break;
+      if (!pass.fit_round(step, error)) break;
       if (m_options.flips) pass.flip_round(step);
       const double now = pass.match();
       if (!(now < error)) {
@@ -204,7 +204,11 @@ class Two_sided_fitter {
       refresh_faces();
       match_input_samples();
       m_output_matches = match_output_samples();
-      return mean_distance(m_output_matches);
+      double sum = 0;
+      for (std::size_t s = 0; s < m_matches.size(); ++s)
+        sum += m_fitter->m_samples[s].weight * m_matches[s].distance;
+      for (const Matched_output_sample& o : m_output_matches) sum += o.weight * o.distance;
+      return 0.5 * sum;  // each direction's weights sum to 1
     }
 
     // Keeps what a round may have to undo: the points, and the flips it makes.
@@ -224,9 +228,9 @@ class Two_sided_fitter {
       start_guards();
     }
 
-    // Solves for the points the last matches ask for and moves toward them; false when the
-    // system could not be solved.
-    bool fit_round(Two_sided_fit_report& report) {
+    // Solves for the points the last matches ask for and moves toward them; `scale` is the mean
+    // distance match() returned. False when the system could not be solved.
+    bool fit_round(Two_sided_fit_report& report, double scale) {
       const std::size_t n = m_vertices.size();
       std::vector<Eigen::Matrix3d> blocks(m_faces.size(), Eigen::Matrix3d::Zero());
       std::vector<Eigen::Matrix3d> sides(m_faces.size(), Eigen::Matrix3d::Zero());
@@ -234,7 +238,6 @@ class Two_sided_fitter {
         blocks[f] += w * b * b.transpose();
         sides[f] += w * b * target.transpose();  // row k: corner k's share
       };
-      const double scale = mean_distance(m_output_matches);
       const auto weight = [&](double base, double distance) {
         return m_options.target_mean ? base / std::max(distance, 0.1 * scale) : base;
       };
@@ -272,12 +275,10 @@ class Two_sided_fitter {
       return true;
     }
 
+    // After fit_round: the faces are those match() refreshed, only their corners moved.
     void flip_round(Two_sided_fit_report& report) {
-      refresh_faces();
       bucket_samples();
-      m_output_area = 0;
-      for (std::uint32_t f = 0; f < m_faces.size(); ++f)
-        m_output_area += triangle_area(triangle(f));
+      m_output_area = output_area();
       if (!(m_output_area > 0)) return;
       m_output_error.resize(m_faces.size());
       for (std::uint32_t f = 0; f < m_faces.size(); ++f)
@@ -403,11 +404,7 @@ class Two_sided_fitter {
       static const std::vector<Vector3> grid =
           internal::barycentric_grid(internal::kFitOutputLevel);
       std::vector<Matched_output_sample> matched;
-      double total_area = 0;
-      for (std::uint32_t f = 0; f < m_faces.size(); ++f) {
-        const internal::Indexed_triangle t = triangle(f);
-        total_area += triangle_area(t);
-      }
+      const double total_area = output_area();
       if (!(total_area > 0)) return matched;
       for (std::uint32_t f = 0; f < m_faces.size(); ++f) {
         const internal::Indexed_triangle t = triangle(f);
@@ -428,12 +425,10 @@ class Two_sided_fitter {
       return 0.5 * internal::triangle_area_normal(t.points[0], t.points[1], t.points[2]).norm();
     }
 
-    double mean_distance(const std::vector<Matched_output_sample>& output_samples) const {
-      double sum = 0;
-      for (std::size_t s = 0; s < m_matches.size(); ++s)
-        sum += m_fitter->m_samples[s].weight * m_matches[s].distance;
-      for (const Matched_output_sample& o : output_samples) sum += o.weight * o.distance;
-      return 0.5 * sum;  // each direction's weights sum to 1
+    double output_area() const {
+      double area = 0;
+      for (std::uint32_t f = 0; f < m_faces.size(); ++f) area += triangle_area(triangle(f));
+      return area;
     }
 
     void move_vertices(const Eigen::MatrixX3d& solved, Two_sided_fit_report& report) {

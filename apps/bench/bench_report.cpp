@@ -1,6 +1,7 @@
 #include "bench_report.h"
 
 #include "common/Json_object.h"
+#include "common/fitting.h"
 
 #include <algorithm>
 #include <cmath>
@@ -146,7 +147,6 @@ std::string summary(const std::vector<std::vector<const Run_record*>>& groups) {
 // Per fitted run "P+fit": its mean error and Hausdorff distance against P's and lt's on the same
 // mesh and target, and its fitting pass's time against lt's simplification (docs/fitting.md).
 std::string fitting_table(const std::vector<Run_record>& records) {
-  const std::string suffix = "+fit";
   const auto find = [&](const Run_record& like, const std::string& policy) -> const Run_record* {
     for (const Run_record& r : records)
       if (r.mesh == like.mesh && r.target == like.target && r.label == like.label &&
@@ -157,10 +157,9 @@ std::string fitting_table(const std::vector<Run_record>& records) {
   const auto ratio = [](double a, double b) { return b > 0 ? format("%.3f", a / b) : "–"; };
   std::string rows;
   for (const Run_record& r : records) {
-    if (r.policy.size() <= suffix.size() ||
-        r.policy.compare(r.policy.size() - suffix.size(), suffix.size(), suffix) != 0)
-      continue;
-    const Run_record* base = find(r, r.policy.substr(0, r.policy.size() - suffix.size()));
+    const std::optional<std::string> fitted = fitted_base(r.policy);
+    if (!fitted) continue;
+    const Run_record* base = find(r, *fitted);
     const Run_record* lt = find(r, "lt");
     rows += "| " + r.mesh + " | " + target_cell(r) + " | " + r.policy + " | " + faces_cell(r) +
             " | " + seconds_cell(r.fit_seconds) + " | " + std::to_string(r.fit_flips) + " | " +

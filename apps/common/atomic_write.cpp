@@ -19,20 +19,23 @@ namespace {
   throw App_error(exit_bad_output, path + ": " + cause);
 }
 
+// The folder `path` is written in, checked to exist.
+fs::path existing_output_folder(const std::string& path) {
+  const fs::path target(path);
+  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec)) fail_output(path, "cannot write: no such folder");
+  return folder;
+}
+
 }  // namespace
 
-void check_output_folder(const std::string& path) {
-  const fs::path target(path);
-  std::error_code ec;
-  if (!fs::is_directory(target.has_parent_path() ? target.parent_path() : fs::path("."), ec))
-    fail_output(path, "cannot write: no such folder");
-}
+void check_output_folder(const std::string& path) { existing_output_folder(path); }
 
 void write_atomically(const std::string& path,
                       const std::function<bool(const std::string& temporary)>& write) {
-  check_output_folder(path);
+  const fs::path folder = existing_output_folder(path);
   const fs::path target(path);
-  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
   std::error_code ec;
   const fs::path temporary = folder / ("." + target.stem().string() + ".tmp-" +
                                        std::to_string(::getpid()) + target.extension().string());

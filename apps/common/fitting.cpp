@@ -11,6 +11,14 @@ namespace apps {
 
 const char* const kFitSuffix = "+fit";
 
+std::optional<std::string> fitted_base(const std::string& name) {
+  const std::string suffix = kFitSuffix;
+  if (name.size() <= suffix.size() ||
+      name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+    return std::nullopt;
+  return name.substr(0, name.size() - suffix.size());
+}
+
 Fit_request take_fit_options(Command_line& cli) {
   Fit_request request;
   request.enabled = cli.take_flag("fit");

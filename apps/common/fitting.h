@@ -9,6 +9,7 @@
 
 #include <cgal_policies/Two_sided_fit_report.h>
 
+#include <optional>
 #include <string>
 
 namespace apps {
@@ -43,6 +44,9 @@ Policy_entry with_fit(const Policy_entry& policy);
 
 // The suffix of those entries' names.
 extern const char* const kFitSuffix;
+
+// P for a "P+fit" name; nothing for any other name.
+std::optional<std::string> fitted_base(const std::string& name);
 
 }  // namespace apps
 

@@ -11,33 +11,28 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 namespace apps {
 namespace {
 
-using Face_component_map =
-    boost::property_map<Mesh, CGAL::dynamic_face_property_t<std::size_t>>::type;
-
-// The face count of each component, indexed by the component ids of `components`.
-std::vector<std::size_t> component_sizes(const Mesh& mesh, const Face_component_map& components,
-                                         std::size_t count) {
-  std::vector<std::size_t> sizes(count, 0);
+// Removes whole components, smallest first (the first found among equals), while
+// keep_dropping(component faces, faces left) holds; never the largest one. Leaves the mesh compact.
+template <typename KeepDropping>
+Dropped_components drop_smallest_while(Mesh& mesh, const KeepDropping& keep_dropping) {
+  auto components = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
+  std::vector<std::size_t> sizes(PMP::connected_components(mesh, components), 0);
   for (Mesh::Face_index f : faces(mesh)) ++sizes[get(components, f)];
-  return sizes;
-}
-
-// The component ids, smallest first, the first found first among equals: the last is the largest
-// component, which the mesh keeps whatever is asked.
-std::vector<std::size_t> ids_by_size(const std::vector<std::size_t>& sizes) {
-  std::vector<std::size_t> ids(sizes.size());
-  std::iota(ids.begin(), ids.end(), 0);
-  std::stable_sort(ids.begin(), ids.end(),
+  std::vector<std::size_t> by_size(sizes.size());
+  std::iota(by_size.begin(), by_size.end(), 0);
+  std::stable_sort(by_size.begin(), by_size.end(),
                    [&](std::size_t a, std::size_t b) { return sizes[a] < sizes[b]; });
-  return ids;
-}
-
-Dropped_components remove_components(Mesh& mesh, const Face_component_map& components,
-                                     const std::vector<std::size_t>& sizes,
-                                     const std::vector<std::size_t>& doomed) {
   Dropped_components dropped;
+  std::vector<std::size_t> doomed;
+  std::size_t faces_left = mesh.number_of_faces();
+  // by_size.back() is the largest component: the mesh keeps it whatever is asked.
+  for (std::size_t i = 0; i + 1 < by_size.size() && keep_dropping(sizes[by_size[i]], faces_left);
+       ++i) {
+    doomed.push_back(by_size[i]);
+    faces_left -= sizes[by_size[i]];
+    dropped.faces += sizes[by_size[i]];
+  }
   if (doomed.empty()) return dropped;
-  for (std::size_t id : doomed) dropped.faces += sizes[id];
   dropped.components = doomed.size();
   PMP::remove_connected_components(mesh, doomed, components);
   mesh.collect_garbage();
@@ -48,28 +43,13 @@ Dropped_components remove_components(Mesh& mesh, const Face_component_map& compo
 
 Dropped_components drop_components_smaller_than(Mesh& mesh, std::size_t min_faces) {
   if (min_faces <= 1) return {};  // every component has a face
-  auto components = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
-  const std::vector<std::size_t> sizes =
-      component_sizes(mesh, components, PMP::connected_components(mesh, components));
-  const std::vector<std::size_t> by_size = ids_by_size(sizes);
-  std::vector<std::size_t> doomed;
-  for (std::size_t i = 0; i + 1 < by_size.size() && sizes[by_size[i]] < min_faces; ++i)
-    doomed.push_back(by_size[i]);
-  return remove_components(mesh, components, sizes, doomed);
+  return drop_smallest_while(mesh,
+                             [&](std::size_t faces, std::size_t) { return faces < min_faces; });
 }
 
 Dropped_components drop_smallest_components_until(Mesh& mesh, std::size_t target_faces) {
-  auto components = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
-  const std::vector<std::size_t> sizes =
-      component_sizes(mesh, components, PMP::connected_components(mesh, components));
-  const std::vector<std::size_t> by_size = ids_by_size(sizes);
-  std::vector<std::size_t> doomed;
-  std::size_t faces_left = mesh.number_of_faces();
-  for (std::size_t i = 0; i + 1 < by_size.size() && faces_left > target_faces; ++i) {
-    doomed.push_back(by_size[i]);
-    faces_left -= sizes[by_size[i]];
-  }
-  return remove_components(mesh, components, sizes, doomed);
+  return drop_smallest_while(mesh,
+                             [&](std::size_t, std::size_t left) { return left > target_faces; });
 }
 
 }  // namespace apps
