@@ -7,6 +7,7 @@
 #include "common/fitting.h"
 #include "common/mesh_io.h"
 #include "common/mesh_measures.h"
+#include "common/policy_registry.h"
 #include "test_meshes.h"
 
 #include <cgal_policies/Hausdorff_bounded_filter.h>
@@ -73,6 +74,29 @@ TEST(HausdorffBoundedPolicies, LocalModeAccumulatesWhileGlobalModeKeepsTheBound)
   const apps::Mesh_error global = simplify_band(cgal_policies::Hausdorff_reference::global, beta);
   EXPECT_GT(local.hausdorff, beta * local.bbox_diagonal);
   EXPECT_LE(global.hausdorff, beta * global.bbox_diagonal);
+}
+
+// The registry's hausdorff entry in local mode: its tolerance is no two-sided bound (the run
+// above goes past it), so the app claims none, and --max-error is kept by the runner's filter.
+// Before, local mode with --max-error took the tighter tolerance as its only check and went past
+// the bound the user asked for.
+TEST(HausdorffBoundedPolicies, LocalModeKeepsMaxErrorThroughTheRunnersFilter) {
+  const double bound = 0.01;
+  const apps::Policy_entry& hausdorff = *apps::find_policy("hausdorff");
+  apps::Simplify_settings settings = apps::default_settings(hausdorff, 2);
+  settings.options["local"] = 1;
+  settings.options["tolerance"] = bound;
+  EXPECT_EQ(apps::two_sided_bound(hausdorff, settings), 0.0);
+  settings.max_error = bound;
+  EXPECT_EQ(apps::two_sided_bound(hausdorff, settings), bound);
+  Mesh mesh = cylinder_band(64);
+  const Mesh original = mesh;
+  const apps::Simplify_outcome outcome = hausdorff.run(mesh, settings);
+  mesh.collect_garbage();
+  const apps::Mesh_error error = apps::measure_mesh_error(original, mesh, 20000);
+  EXPECT_LE(error.hausdorff, bound * error.bbox_diagonal);
+  EXPECT_LT(mesh.number_of_faces(), original.number_of_faces());
+  EXPECT_EQ(outcome.stop_reason, apps::Stop_reason::error_bound_reached);
 }
 
 // `original` simplified by the Hausdorff-bounded policies toward `target` faces.

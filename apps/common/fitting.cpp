@@ -42,7 +42,7 @@ std::string fit_help() {
 
 double two_sided_bound(const Policy_entry& policy, const Simplify_settings& settings) {
   if (settings.max_error > 0) return settings.max_error;
-  return policy.bound_option.empty() ? 0.0 : settings.options.at(policy.bound_option);
+  return policy.own_bound ? policy.own_bound(settings) : 0.0;
 }
 
 Fit_outcome fit_to_input(Mesh& mesh, const Mesh& original, int rounds, double max_normal_angle_deg,

@@ -33,11 +33,15 @@ const Policy_options_table<Options>& hausdorff_options() {
 Simplify_outcome run_hausdorff(Mesh& mesh, const Simplify_settings& settings) {
   Options options = hausdorff_options().read(settings.options);
   options.max_normal_angle_deg = settings.max_normal_angle_deg;
-  // The policy keeps --max-error itself, with the tighter of the two bounds.
-  if (settings.max_error > 0) options.beta = std::min(options.beta, settings.max_error);
+  // In global mode the policy keeps --max-error itself, with the tighter of the two bounds. In
+  // local mode its tolerance bounds each step against the patch before it, not the output against
+  // the input, so the runner's filter keeps --max-error, as for the other policies.
+  const bool local = options.reference == cgal_policies::Hausdorff_reference::local;
+  if (settings.max_error > 0 && !local) options.beta = std::min(options.beta, settings.max_error);
   const cgal_policies::Hausdorff_bounded_policies<Mesh, Kernel> hausdorff(mesh, options);
   return run_edge_collapse(mesh, settings, hausdorff.get_cost(), hausdorff.get_placement(),
-                           hausdorff.get_filter(), Error_bound_keeper::policy);
+                           hausdorff.get_filter(),
+                           local ? Error_bound_keeper::runner : Error_bound_keeper::policy);
 }
 
 }  // namespace
@@ -48,7 +52,9 @@ std::vector<Policy_entry> hausdorff_policies() {
       "cgal_policies Hausdorff_bounded_policies (Liu et al. 2017: K+1 candidates per edge, "
       "refused above the tolerance; global mode bounds the two-sided distance to the input)",
       hausdorff_options().options(), run_hausdorff};
-  hausdorff.bound_option = "tolerance";
+  hausdorff.own_bound = [](const Simplify_settings& settings) {
+    return settings.options.at("local") != 0 ? 0.0 : settings.options.at("tolerance");
+  };
   return {hausdorff};
 }
 

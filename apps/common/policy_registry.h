@@ -68,7 +68,9 @@ struct Policy_entry {
   Run run;
   bool takes_error_bound = true;  // whether --max-error can bound it
   bool takes_time_limit = true;   // whether it stops at Simplify_settings::time_limit_seconds
-  std::string bound_option;       // the option that is its own two-sided bound, if any
+  // Its own two-sided bound in these settings (a fraction of the input's diagonal); empty or 0
+  // when it keeps none.
+  std::function<double(const Simplify_settings&)> own_bound;
 };
 
 const std::vector<Policy_entry>& policy_registry();
