@@ -10,8 +10,8 @@
 #include "common/mesh_io.h"
 #include "common/mesh_measures.h"
 #include "common/peak_memory.h"
-#include "common/policy_command_line.h"
 #include "common/policy_registry.h"
+#include "common/simplify_request.h"
 #include "common/small_components.h"
 #include "common/smoothing.h"
 
@@ -21,7 +21,7 @@
 #include "snapshot.h"
 #endif
 
-#include <cmath>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -74,38 +74,6 @@ void print_help() {
     std::cout << "  " << p.name << ": " << p.summary << '\n' << policy_options_help(p);
   std::cout << "\nExit codes: 0 done, 1 not done, 2 bad usage, 3 bad input, 4 output not written,\n"
                "130 or 143 interrupted by SIGINT or SIGTERM (OUT is then never half-written).\n";
-}
-
-// RATIO, --ratio or --faces, checked before the input is read.
-class Face_target {
- public:
-  Face_target(std::optional<double> ratio, std::optional<double> faces) : m_ratio(ratio) {
-    if (ratio && faces) throw App_error(exit_usage, "give a ratio or --faces, not both");
-    if (faces) {
-      if (*faces < 1 || *faces != std::floor(*faces))
-        throw App_error(exit_usage, "--faces must be a whole number of at least 1");
-      m_faces = std::size_t(*faces);
-      return;
-    }
-    if (!ratio) throw App_error(exit_usage, "give RATIO, --ratio or --faces (see --help)");
-    if (!(*ratio > 0 && *ratio <= 1))
-      throw App_error(exit_usage, "RATIO or --ratio must be a number in (0, 1]");
-  }
-  std::size_t of(std::size_t input_faces) const {
-    return m_ratio ? std::size_t(std::llround(*m_ratio * double(input_faces))) : m_faces;
-  }
-
- private:
-  std::optional<double> m_ratio;
-  std::size_t m_faces = 0;
-};
-
-// A whole number of at least 0 for `option`, 0 when not given.
-std::size_t take_count(Command_line& cli, const std::string& option) {
-  const double value = cli.take_number(option).value_or(0);
-  if (!(value >= 0 && value == std::floor(value)))
-    throw App_error(exit_usage, "--" + option + " must be a whole number of at least 0");
-  return std::size_t(value);
 }
 
 // --snapshot OUT.png [--size WxH], checked before anything is read or written. The picture is
@@ -164,71 +132,42 @@ void write_mesh_and_snapshot([[maybe_unused]] const Mesh& original, const Mesh& 
 #endif
 }
 
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 int run(int argc, char** argv) {
   Command_line cli(argc, argv);
   if (cli.take_flag("help", "-h")) {
     print_help();
     return exit_success;
   }
-  Policy_choice choice = take_policy_options(cli, "classic");
-  const Policy_entry* policy = choice.policy;
-  Simplify_settings& settings = choice.settings;
-  std::optional<double> ratio = cli.take_number("ratio");
-  const std::optional<double> faces = cli.take_number("faces");
-  const std::optional<double> samples = cli.take_number("samples");
-  const std::optional<double> max_error = cli.take_number("max-error");
-  const double merge_distance = cli.take_number("merge-distance").value_or(0.0);
-  if (!(merge_distance >= 0)) throw App_error(exit_usage, "--merge-distance must be at least 0");
-  settings.time_limit_seconds = cli.take_number("time-limit").value_or(0.0);
-  if (!(settings.time_limit_seconds >= 0))
-    throw App_error(exit_usage, "--time-limit must be a number of seconds of at least 0");
-  if (settings.time_limit_seconds > 0 && !policy->takes_time_limit)
-    throw App_error(exit_usage, "--time-limit needs an edge-collapse policy; " + policy->name +
-                                    " runs its own engine (try classic)");
-  const std::size_t min_component = take_count(cli, "min-component");
-  const bool drop_small_pieces = cli.take_flag("drop-small-pieces");
-  const Smoothing_request smoothing = take_smoothing_options(cli);
-  const Fit_request fit = take_fit_options(cli);
   const std::optional<Snapshot_request> snapshot = take_snapshot_options(cli);
-  const bool json = cli.take_flag("json"), measure = cli.take_flag("measure"),
-             force = cli.take_flag("force"), quiet = cli.take_flag("quiet");
-  if (max_error && !(*max_error > 0)) throw App_error(exit_usage, "--max-error must be positive");
-  if (max_error && !policy->takes_error_bound)
-    throw App_error(exit_usage, "--max-error needs an edge-collapse policy; " + policy->name +
-                                    " runs its own engine (try classic)");
-  settings.max_error = max_error.value_or(0.0);
-  const std::vector<std::string> args = cli.positionals();
-  if (args.size() < 2 || args.size() > 3)
-    throw App_error(exit_usage, "usage: simplify IN OUT [RATIO] [options] (see --help)");
-  if (args.size() == 3) {
-    if (ratio) throw App_error(exit_usage, "give RATIO or --ratio, not both");
-    ratio = parse_number(args[2], "RATIO");
-  }
-  const Face_target target(ratio, faces);
-  if (samples && !(*samples >= 1 && *samples == std::floor(*samples)))
-    throw App_error(exit_usage, "--samples must be a whole number of at least 1");
-  // The run's two-sided bound, which smoothing (when asked) and fitting keep.
-  const double bound = two_sided_bound(*policy, settings);
-  if (smoothing.bounded && !(bound > 0))
-    throw App_error(exit_usage, "--smooth-bounded needs --max-error (or a policy's --tolerance)");
-  const std::string& input = args[0];
-  const std::string& output = args[1];
-  check_output_path(input, output, force);
+  Simplify_request request = take_simplify_request(cli);
+  const Policy_entry* policy = request.choice.policy;
+  Simplify_settings& settings = request.choice.settings;
+  const std::string& input = request.input;
+  const std::string& output = request.output;
+  const Smoothing_request& smoothing = request.smoothing;
+  const Fit_request& fit = request.fit;
+  const bool quiet = request.quiet, measure = request.measure;
 
   Read_report read_report;
+  const auto read_start = std::chrono::steady_clock::now();
   Mesh mesh = read_triangle_mesh(input, &read_report);
+  const double read_seconds = seconds_since(read_start);
   if (!quiet)
     for (const std::string& repair : read_report.repairs)
       std::cerr << "simplify: " << input << ": " << repair << '\n';
   const std::size_t input_faces = mesh.number_of_faces();
   const std::size_t input_vertices = mesh.number_of_vertices();
-  settings.target_faces = target.of(input_faces);
+  settings.target_faces = request.target.of(input_faces);
   const Mesh original = measure || smoothing.bounded || snapshot || fit.enabled ? mesh : Mesh();
   // The pre-pass (docs/quadric_core.md, pair contraction) is not part of the simplification's time.
   const cgal_policies::Border_pair_contraction_report merge_report =
-      cgal_policies::Border_pair_contraction(merge_distance)(mesh);
+      cgal_policies::Border_pair_contraction(request.merge_distance)(mesh);
   if (merge_report.stitched_edges > 0) mesh.collect_garbage();
-  const Dropped_components specks = drop_components_smaller_than(mesh, min_component);
+  const Dropped_components specks = drop_components_smaller_than(mesh, request.min_component);
 
   Simplify_outcome outcome;
   {
@@ -238,15 +177,18 @@ int run(int argc, char** argv) {
   }
   mesh.collect_garbage();
   const Dropped_components vanished =
-      drop_small_pieces && outcome.stop_reason == Stop_reason::no_collapse_left
+      request.drop_small_pieces && outcome.stop_reason == Stop_reason::no_collapse_left
           ? drop_smallest_components_until(mesh, settings.target_faces)
           : Dropped_components();
-  const std::size_t refused_smoothing_moves = smooth_mesh(mesh, original, smoothing, bound);
+  const std::size_t refused_smoothing_moves = smooth_mesh(mesh, original, smoothing, request.bound);
   // After smoothing, so that the output the user gets is the fitted one.
   const Fit_outcome fitted =
-      fit.enabled ? fit_to_input(mesh, original, fit.rounds, settings.max_normal_angle_deg, bound)
-                  : Fit_outcome();
+      fit.enabled
+          ? fit_to_input(mesh, original, fit.rounds, settings.max_normal_angle_deg, request.bound)
+          : Fit_outcome();
+  const auto write_start = std::chrono::steady_clock::now();
   write_mesh_and_snapshot(original, mesh, policy->name, snapshot, output);
+  const double write_seconds = seconds_since(write_start);
 
   const std::size_t removed = input_faces - mesh.number_of_faces();
   Json_object report;
@@ -259,6 +201,8 @@ int run(int argc, char** argv) {
   report.add("output_faces", mesh.number_of_faces());
   report.add("output_vertices", mesh.number_of_vertices());
   report.add("seconds", outcome.seconds);
+  report.add("read_seconds", read_seconds);    // reading and repairing IN
+  report.add("write_seconds", write_seconds);  // writing OUT (and the snapshot, when asked)
   report.add("faces_removed_per_second", outcome.seconds > 0 ? removed / outcome.seconds : 0.0);
   report.add("peak_memory_mib", peak_rss_mib());
   report.add("stop_reason", to_string(outcome.stop_reason));
@@ -266,10 +210,10 @@ int run(int argc, char** argv) {
   report.add("target_gap_faces", static_cast<long long>(mesh.number_of_faces()) -
                                      static_cast<long long>(settings.target_faces));
   report.add("time_limit_seconds", settings.time_limit_seconds);
-  report.add("min_component", min_component);
+  report.add("min_component", request.min_component);
   report.add("dropped_components", specks.components);
   report.add("dropped_component_faces", specks.faces);
-  report.add("drop_small_pieces", drop_small_pieces);
+  report.add("drop_small_pieces", request.drop_small_pieces);
   report.add("vanished_components", vanished.components);
   report.add("vanished_faces", vanished.faces);
   report.add("max_error", settings.max_error);
@@ -285,7 +229,7 @@ int run(int argc, char** argv) {
     report.add("fit_refused_flips", fitted.report.refused_flips);
   }
   report.add("repairs", read_report.repairs);
-  report.add("merge_distance", merge_distance);
+  report.add("merge_distance", request.merge_distance);
   report.add("merged_pairs", merge_report.merged_pairs);
   report.add("stitched_edges", merge_report.stitched_edges);
   report.add("refused_pairs", merge_report.refused_pairs);
@@ -294,13 +238,12 @@ int run(int argc, char** argv) {
   for (const auto& [name, value] : settings.options) report.add("option_" + name, value);
   Mesh_error error;
   if (measure) {
-    error =
-        measure_mesh_error(original, mesh, samples ? std::size_t(*samples) : kDefaultErrorSamples);
+    error = measure_mesh_error(original, mesh, request.samples.value_or(kDefaultErrorSamples));
     add_fields(report, error);
     add_fields(report, check_mesh_validity(mesh));
   }
 
-  if (json) {
+  if (request.json) {
     std::cout << report.str() << '\n';
   } else if (!quiet) {
     std::printf("%s: %zu -> %zu faces in %.3f s (%s)\n", policy->name.c_str(), input_faces,

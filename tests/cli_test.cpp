@@ -1,10 +1,12 @@
 // The apps from the outside: exit codes, one error line naming the file, no partial output even
 // when interrupted, the input never overwritten (README.md "Interfaces that others rely on"); and
-// the removal of small components that simplify runs on dirty scans.
+// the removal of small components that simplify runs on dirty scans; the OFF and PLY readers.
 #include "test_meshes.h"
 
+#include "common/App_error.h"
 #include "common/mesh_io.h"
 #include "common/small_components.h"
+#include "common/soup_readers.h"
 
 #include <gtest/gtest.h>
 
@@ -13,9 +15,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -201,6 +205,22 @@ TEST_F(Cli, OptionsOutOfRangeAreRefusedBeforeTheInputIsRead) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_NE(r.err.find(option), std::string::npos)
         << "the line names " << option << ": " << r.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+}
+
+// Counts beyond what a size_t or an int holds are refused, not converted (that conversion is
+// undefined behaviour, which UBSan reports in the sanitized build).
+TEST_F(Cli, CountsTooLargeForTheirTypeAreRefused) {
+  const fs::path in = file("missing.off"), out = file("out.off");
+  const std::string io = in.string() + " " + out.string() + " ";
+  for (const auto& [option, arguments] : std::vector<std::pair<std::string, std::string>>{
+           {"--faces", "--faces 1e30"},
+           {"--samples", "0.5 --samples 1e30"},
+           {"--min-component", "0.5 --min-component 1e30"}}) {
+    const Command_result r = run("simplify", io + arguments);
+    EXPECT_EQ(r.exit_code, 2) << arguments << ": " << r.err;
+    EXPECT_NE(r.err.find(option), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(out));
   }
 }
@@ -658,3 +678,130 @@ TEST_F(Cli, SmallPiecesAreDroppedOnlyWhenAsked) {
 }
 
 }  // namespace
+
+// The OFF and PLY readers (apps/common/soup_readers.h), on hand-written files.
+namespace readers {
+
+using apps::Polygon_soup;
+using Polygons = std::vector<std::vector<std::size_t>>;
+
+std::vector<std::array<double, 3>> coordinates(const Polygon_soup& soup) {
+  std::vector<std::array<double, 3>> result;
+  for (const apps::Point& p : soup.points) result.push_back({p.x(), p.y(), p.z()});
+  return result;
+}
+
+const std::vector<std::array<double, 3>> kSquare = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+
+void expect_square(const Polygon_soup& soup, const Polygons& polygons) {
+  EXPECT_EQ(coordinates(soup), kSquare);
+  EXPECT_EQ(soup.polygons, polygons);
+}
+
+// The cause of the bad-input error that parsing `bytes` gives; "" when it parses.
+template <typename Parse>
+std::string refusal(Parse parse, const std::string& bytes) {
+  try {
+    parse("f", bytes);
+  } catch (const apps::App_error& e) {
+    EXPECT_EQ(e.code(), apps::exit_bad_input);
+    const std::string message = e.what();
+    EXPECT_EQ(message.rfind("f: ", 0), 0u) << message;
+    return message;
+  }
+  return "";
+}
+
+TEST(Readers, OffSkipsCommentsColoursAndNormals) {
+  const Polygon_soup soup =
+      apps::parse_off("f",
+                      "# a square\nCOFF 4 2 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255 # red\n\n"
+                      "+1 1 0e0 0 0 255 255\n0 1 0 1 1 1 1\n3 0 1 2 0.5 0.5 0.5\n3 0 2 3\n");
+  expect_square(soup, {{0, 1, 2}, {0, 2, 3}});
+}
+
+TEST(Readers, PlyAsciiSkipsOtherPropertiesAndElements) {
+  const Polygon_soup soup = apps::parse_ply(
+      "f",
+      "ply\nformat ascii 1.0\ncomment made by hand\nelement vertex 4\nproperty double x\n"
+      "property float nx\nproperty float y\nproperty float z\nelement face 1\n"
+      "property uchar flags\nproperty list uchar int vertex_indices\nelement edge 1\n"
+      "property int vertex1\nproperty int vertex2\nend_header\n"
+      "0 9 0 0\n1 9 0 0\n1 9 1 0\n0 9 1 0\n7 4 0 1 2 3\n0 2\n");
+  expect_square(soup, {{0, 1, 2, 3}});
+}
+
+// The same square in both byte orders, with a uint16 list count and uint32 indices.
+std::string binary_square(bool big_endian) {
+  std::string bytes = std::string("ply\nformat binary_") + (big_endian ? "big" : "little") +
+                      "_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                      "property float z\nelement face 2\n"
+                      "property list ushort uint vertex_indices\nend_header\n";
+  const auto append = [&](const void* value, std::size_t size) {
+    std::string raw(static_cast<const char*>(value), size);
+    if (big_endian) std::reverse(raw.begin(), raw.end());
+    bytes += raw;
+  };
+  for (const auto& p : kSquare)
+    for (double c : p) {
+      const float f = float(c);
+      append(&f, 4);
+    }
+  for (const std::array<std::uint32_t, 3>& face :
+       {std::array<std::uint32_t, 3>{0, 1, 2}, std::array<std::uint32_t, 3>{0, 2, 3}}) {
+    const std::uint16_t count = 3;
+    append(&count, 2);
+    for (std::uint32_t index : face) append(&index, 4);
+  }
+  return bytes;
+}
+
+TEST(Readers, PlyBinaryInBothByteOrders) {
+  for (bool big_endian : {false, true}) {
+    expect_square(apps::parse_ply("f", binary_square(big_endian)), {{0, 1, 2}, {0, 2, 3}});
+  }
+}
+
+// Stanford's scans store faces as strips: every other triangle is turned back, -1 restarts, and
+// the degenerate triangles that turn a strip are left out.
+TEST(Readers, PlyTristripsBecomeTrianglesFacingOneWay) {
+  const Polygon_soup soup = apps::parse_ply(
+      "f",
+      "ply\nformat ascii 1.0\nelement vertex 7\nproperty float x\nproperty float y\n"
+      "property float z\nelement tristrips 1\nproperty list int int vertex_indices\n"
+      "end_header\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n5 5 0\n6 5 0\n5 6 0\n"
+      "10 0 1 2 3 3 -1 4 5 6 6\n");
+  EXPECT_EQ(soup.polygons, (Polygons{{0, 1, 2}, {2, 1, 3}, {4, 5, 6}}));
+}
+
+TEST(Readers, MalformedFilesAreOneBadInputLine) {
+  const auto off = [](const std::string& source, const std::string& bytes) {
+    return apps::parse_off(source, bytes);
+  };
+  const auto ply = [](const std::string& source, const std::string& bytes) {
+    return apps::parse_ply(source, bytes);
+  };
+  EXPECT_NE(refusal(off, "OFF\n4 1 0\n0 0 0\n"), "");                          // truncated
+  EXPECT_NE(refusal(off, "OFF\n900000 1 0\n0 0 0\n"), "");                     // forged count
+  EXPECT_NE(refusal(off, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 -2\n"), "");  // negative index
+  EXPECT_NE(refusal(off, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n-1.2 0 1\n"), "");  // bad corner count
+  EXPECT_NE(refusal(off, "4OFF\n"), "");
+  std::string cut = binary_square(false);
+  cut.resize(cut.size() - 3);
+  EXPECT_NE(refusal(ply, cut), "");
+  EXPECT_NE(refusal(ply, "ply\nformat ascii 1.0\nelement vertex 1\n"), "");  // no end_header
+  EXPECT_NE(refusal(ply, "ply\nformat ascii 1.0\nelemply\nend_header\n"), "");
+  EXPECT_NE(refusal(ply, "ply\nformat ascii 1.0\nproperty float x\nend_header\n"), "");
+  EXPECT_NE(refusal(ply,
+                    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                    "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                    "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 -1\n"),
+            "");  // a negative index outside a strip
+  EXPECT_NE(refusal(ply,
+                    "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+                    "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                    "end_header\n0 0 0\n200 0 0 0\n"),
+            "");  // a list longer than the file
+}
+
+}  // namespace readers

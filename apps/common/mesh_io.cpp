@@ -3,6 +3,7 @@
 #include "App_error.h"
 #include "atomic_write.h"
 #include "declared_counts.h"
+#include "soup_readers.h"
 
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -18,6 +19,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -52,6 +54,20 @@ void check_readable_file(const std::string& path) {
   if (!has_supported_mesh_extension(path))
     fail_input(path, "unsupported format '" + lower_extension(path) +
                          "' (supported: .off, .obj, .ply, .stl)");
+}
+
+// The whole file, read at once.
+std::string file_bytes(const std::string& path) {
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (!file) fail_input(path, std::string("cannot open: ") + std::strerror(errno));
+  std::string bytes;
+  char buffer[1 << 16];
+  std::size_t got = 0;
+  while ((got = std::fread(buffer, 1, sizeof buffer, file)) > 0) bytes.append(buffer, got);
+  const bool failed = std::ferror(file) != 0;
+  std::fclose(file);
+  if (failed) fail_input(path, "cannot read: an I/O error");
+  return bytes;
 }
 
 void check_soup(const std::string& path, const std::vector<Point>& points,
@@ -102,6 +118,12 @@ bool has_supported_mesh_extension(const std::string& path) {
 Mesh read_triangle_mesh(const std::string& path, Read_report* report) {
   check_readable_file(path);
   check_declared_counts(path);
+  const std::string extension = lower_extension(path);
+  if (extension == ".off" || extension == ".ply") {
+    const std::string bytes = file_bytes(path);
+    Polygon_soup soup = extension == ".off" ? parse_off(path, bytes) : parse_ply(path, bytes);
+    return triangle_mesh_from_soup(path, soup.points, soup.polygons, report);
+  }
   std::vector<Point> points;
   std::vector<Polygon> polygons;
   bool parsed = false;
@@ -111,8 +133,12 @@ Mesh read_triangle_mesh(const std::string& path, Read_report* report) {
     fail_input(path, std::string("cannot parse: ") + e.what());
   }
   if (!parsed)
-    fail_input(path, "cannot parse: not a valid " + lower_extension(path) +
-                         " file (malformed or truncated)");
+    fail_input(path, "cannot parse: not a valid " + extension + " file (malformed or truncated)");
+  return triangle_mesh_from_soup(path, points, polygons, report);
+}
+
+Mesh triangle_mesh_from_soup(const std::string& path, std::vector<Point>& points,
+                             std::vector<Polygon>& polygons, Read_report* report) {
   check_soup(path, points, polygons);
 
   std::vector<std::string> repairs;

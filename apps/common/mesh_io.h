@@ -5,6 +5,7 @@
 
 #include "Mesh_types.h"
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,12 @@ bool has_supported_mesh_extension(const std::string& path);
 
 // Reads a triangle mesh; throws App_error(exit_bad_input, "<path>: <cause>") when it cannot.
 Mesh read_triangle_mesh(const std::string& path, Read_report* report = nullptr);
+
+// The reader's second half: checks the soup (faces, finite points, indices in range), repairs it
+// when it is not a polygon mesh as it stands, and triangulates. Errors name `source`, as above.
+Mesh triangle_mesh_from_soup(const std::string& source, std::vector<Point>& points,
+                             std::vector<std::vector<std::size_t>>& polygons,
+                             Read_report* report = nullptr);
 
 // Throws App_error(exit_usage) when `output` cannot be a mesh file or would overwrite `input`,
 // App_error(exit_bad_output) when its folder does not exist.

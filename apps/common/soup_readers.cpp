@@ -1,0 +1,410 @@
+#include "soup_readers.h"
+
+#include "App_error.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <optional>
+
+namespace apps {
+namespace {
+
+[[noreturn]] void fail(const std::string& source, const std::string& cause) {
+  throw App_error(exit_bad_input, source + ": " + cause);
+}
+
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f'; }
+
+// A number of text; from_chars takes no leading '+', which files do write.
+std::optional<double> to_double(std::string_view token) {
+  if (!token.empty() && token[0] == '+') token.remove_prefix(1);
+  double value = 0;
+  const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+  if (error != std::errc() || end != token.data() + token.size()) return std::nullopt;
+  return value;
+}
+
+// A count or an index: a whole number of at least 0 that a size_t holds.
+std::optional<std::size_t> to_count(std::string_view token) {
+  if (!token.empty() && token[0] == '+') token.remove_prefix(1);
+  std::size_t value = 0;
+  const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+  if (error != std::errc() || end != token.data() + token.size()) return std::nullopt;
+  return value;
+}
+
+// Whitespace-separated tokens of a piece of text.
+class Tokens {
+ public:
+  explicit Tokens(std::string_view text) : m_text(text) {}
+  // The next token; empty at the end.
+  std::string_view next() {
+    while (m_at < m_text.size() && is_blank(m_text[m_at])) ++m_at;
+    const std::size_t start = m_at;
+    while (m_at < m_text.size() && !is_blank(m_text[m_at])) ++m_at;
+    return m_text.substr(start, m_at - start);
+  }
+
+ private:
+  std::string_view m_text;
+  std::size_t m_at = 0;
+};
+
+// The lines of a text one by one, with OFF's # comments cut off; lines left blank are skipped.
+class Content_lines {
+ public:
+  explicit Content_lines(std::string_view text) : m_text(text) {}
+  std::optional<std::string_view> next() {
+    while (m_at < m_text.size()) {
+      std::size_t end = m_text.find('\n', m_at);
+      if (end == std::string_view::npos) end = m_text.size();
+      std::string_view line = m_text.substr(m_at, end - m_at);
+      m_at = end + 1;
+      line = line.substr(0, line.find('#'));
+      if (std::any_of(line.begin(), line.end(), [](char c) { return !is_blank(c); })) return line;
+    }
+    return std::nullopt;
+  }
+
+ private:
+  std::string_view m_text;
+  std::size_t m_at = 0;
+};
+
+// --- OFF ---
+
+// "OFF" with any of the prefixes ST, C and N, in that order.
+bool is_off_keyword(std::string_view keyword) {
+  for (const char* prefix : {"ST", "C", "N"})
+    if (keyword.substr(0, std::strlen(prefix)) == prefix)
+      keyword.remove_prefix(std::strlen(prefix));
+  return keyword == "OFF";
+}
+
+}  // namespace
+
+Polygon_soup parse_off(const std::string& source, std::string_view bytes) {
+  Content_lines lines(bytes);
+  const std::optional<std::string_view> first = lines.next();
+  if (!first) fail(source, "not an OFF file (no header)");
+  Tokens header(*first);
+  const std::string_view keyword = header.next();
+  if (!is_off_keyword(keyword))
+    fail(source, "not an OFF file: the header is '" + std::string(keyword.substr(0, 20)) +
+                     "' (OFF, COFF, NOFF or STOFF; 4OFF, nOFF and binary OFF are not read)");
+  Tokens counts(first->substr(std::size_t(keyword.data() - first->data()) + keyword.size()));
+  std::string_view vertices_token = counts.next();
+  if (vertices_token.empty()) {
+    const std::optional<std::string_view> line = lines.next();
+    if (!line) fail(source, "truncated: no vertex and face counts");
+    counts = Tokens(*line);
+    vertices_token = counts.next();
+  }
+  if (vertices_token == "BINARY") fail(source, "binary OFF is not read (write it as text)");
+  const std::optional<std::size_t> vertices = to_count(vertices_token);
+  const std::optional<std::size_t> faces = to_count(counts.next());
+  if (!vertices || !faces) fail(source, "the vertex and face counts are not whole numbers");
+  // Each vertex and face takes at least two bytes: a larger count is a forged or cut header.
+  if (*vertices > bytes.size() / 2 || *faces > bytes.size() / 2)
+    fail(source, "declares " + std::to_string(*vertices) + " vertices and " +
+                     std::to_string(*faces) + " faces in a file of " +
+                     std::to_string(bytes.size()) + " bytes");
+
+  Polygon_soup soup;
+  soup.points.reserve(*vertices);
+  for (std::size_t i = 0; i < *vertices; ++i) {
+    const std::optional<std::string_view> line = lines.next();
+    if (!line) fail(source, "truncated: vertex " + std::to_string(i) + " is missing");
+    Tokens tokens(*line);
+    double xyz[3];
+    for (double& c : xyz) {
+      const std::optional<double> value = to_double(tokens.next());
+      if (!value) fail(source, "vertex " + std::to_string(i) + ": x y z are not three numbers");
+      c = *value;
+    }
+    soup.points.emplace_back(xyz[0], xyz[1], xyz[2]);  // what follows (normal, colour) is skipped
+  }
+  soup.polygons.reserve(*faces);
+  for (std::size_t f = 0; f < *faces; ++f) {
+    const std::optional<std::string_view> line = lines.next();
+    if (!line) fail(source, "truncated: face " + std::to_string(f) + " is missing");
+    Tokens tokens(*line);
+    const std::optional<std::size_t> corners = to_count(tokens.next());
+    if (!corners || *corners < 3 || *corners > line->size())
+      fail(source, "face " + std::to_string(f) + ": the corner count is not a number of 3 or more");
+    std::vector<std::size_t> polygon(*corners);
+    for (std::size_t& index : polygon) {
+      const std::optional<std::size_t> value = to_count(tokens.next());
+      if (!value) fail(source, "face " + std::to_string(f) + ": a corner is not a vertex index");
+      index = *value;
+    }
+    soup.polygons.push_back(std::move(polygon));  // a colour after the corners is skipped
+  }
+  return soup;
+}
+
+namespace {
+
+// --- PLY ---
+
+enum class Ply_type { int8, uint8, int16, uint16, int32, uint32, float32, float64 };
+
+std::optional<Ply_type> ply_type(std::string_view name) {
+  static const std::pair<const char*, Ply_type> kNames[] = {
+      {"char", Ply_type::int8},      {"int8", Ply_type::int8},       {"uchar", Ply_type::uint8},
+      {"uint8", Ply_type::uint8},    {"short", Ply_type::int16},     {"int16", Ply_type::int16},
+      {"ushort", Ply_type::uint16},  {"uint16", Ply_type::uint16},   {"int", Ply_type::int32},
+      {"int32", Ply_type::int32},    {"uint", Ply_type::uint32},     {"uint32", Ply_type::uint32},
+      {"float", Ply_type::float32},  {"float32", Ply_type::float32}, {"double", Ply_type::float64},
+      {"float64", Ply_type::float64}};
+  for (const auto& [text, type] : kNames)
+    if (name == text) return type;
+  return std::nullopt;
+}
+
+std::size_t size_of(Ply_type type) {
+  switch (type) {
+    case Ply_type::int8:
+    case Ply_type::uint8:
+      return 1;
+    case Ply_type::int16:
+    case Ply_type::uint16:
+      return 2;
+    case Ply_type::int32:
+    case Ply_type::uint32:
+    case Ply_type::float32:
+      return 4;
+    case Ply_type::float64:
+      return 8;
+  }
+  return 8;
+}
+
+struct Ply_property {
+  std::string name;
+  Ply_type type = Ply_type::float32;
+  std::optional<Ply_type> count_type;  // set for a list, whose items are of `type`
+};
+
+struct Ply_element {
+  std::string name;
+  std::size_t count = 0;
+  std::vector<Ply_property> properties;
+};
+
+enum class Ply_format { ascii, little_endian, big_endian };
+
+struct Ply_header {
+  Ply_format format = Ply_format::ascii;
+  std::vector<Ply_element> elements;
+  std::size_t body = 0;  // where the data starts
+};
+
+Ply_header parse_ply_header(const std::string& source, std::string_view bytes) {
+  if (bytes.substr(0, 4) != "ply\n" && bytes.substr(0, 5) != "ply\r\n")
+    fail(source, "not a PLY file (it does not start with 'ply')");
+  Ply_header header;
+  bool has_format = false;
+  std::size_t at = bytes.find('\n') + 1;
+  for (std::size_t line_number = 2;; ++line_number) {
+    const std::size_t end = bytes.find('\n', at);
+    if (end == std::string_view::npos) fail(source, "truncated header (no end_header)");
+    Tokens tokens(bytes.substr(at, end - at));
+    at = end + 1;
+    const std::string_view keyword = tokens.next();
+    const std::string where = "header line " + std::to_string(line_number) + ": ";
+    if (keyword == "end_header") break;
+    if (keyword == "comment" || keyword == "obj_info" || keyword.empty()) continue;
+    if (keyword == "format") {
+      const std::string_view format = tokens.next();
+      if (format == "ascii")
+        header.format = Ply_format::ascii;
+      else if (format == "binary_little_endian")
+        header.format = Ply_format::little_endian;
+      else if (format == "binary_big_endian")
+        header.format = Ply_format::big_endian;
+      else
+        fail(source, where + "unknown format '" + std::string(format.substr(0, 30)) + "'");
+      has_format = true;
+    } else if (keyword == "element") {
+      Ply_element element;
+      element.name = tokens.next();
+      const std::optional<std::size_t> count = to_count(tokens.next());
+      if (element.name.empty() || !count) fail(source, where + "expected 'element NAME COUNT'");
+      // Each element takes at least one byte of the body.
+      if (*count > bytes.size()) fail(source, where + "declares more elements than the file holds");
+      element.count = *count;
+      header.elements.push_back(std::move(element));
+    } else if (keyword == "property") {
+      if (header.elements.empty()) fail(source, where + "a property before any element");
+      Ply_property property;
+      std::string_view type = tokens.next();
+      if (type == "list") {
+        property.count_type = ply_type(tokens.next());
+        if (!property.count_type) fail(source, where + "unknown list count type");
+        type = tokens.next();
+      }
+      const std::optional<Ply_type> item = ply_type(type);
+      property.name = tokens.next();
+      if (!item || property.name.empty()) fail(source, where + "expected 'property TYPE NAME'");
+      property.type = *item;
+      header.elements.back().properties.push_back(std::move(property));
+    } else {
+      fail(source, where + "unknown keyword '" + std::string(keyword.substr(0, 30)) + "'");
+    }
+  }
+  if (!has_format) fail(source, "the header has no format line");
+  header.body = at;
+  return header;
+}
+
+// The values of a PLY body, one by one, in either encoding; all of them are read as doubles,
+// which hold every PLY integer exactly.
+class Ply_values {
+ public:
+  Ply_values(const std::string& source, std::string_view body, Ply_format format)
+      : m_source(source), m_body(body), m_format(format), m_tokens(body) {}
+
+  double next(Ply_type type) {
+    if (m_format == Ply_format::ascii) {
+      const std::string_view token = m_tokens.next();
+      if (token.empty()) fail(m_source, "truncated: the data ends before the header's elements");
+      const std::optional<double> value = to_double(token);
+      if (!value) fail(m_source, "'" + std::string(token.substr(0, 30)) + "' is not a number");
+      return *value;
+    }
+    const std::size_t size = size_of(type);
+    if (m_body.size() - m_at < size)
+      fail(m_source, "truncated: the data ends before the header's elements");
+    unsigned char raw[8];
+    std::memcpy(raw, m_body.data() + m_at, size);
+    m_at += size;
+    if (m_format == Ply_format::big_endian) std::reverse(raw, raw + size);
+    return decode(raw, type);
+  }
+
+  // An upper bound of the values left: a list longer than that is a forged count.
+  std::size_t values_left() const { return m_body.size() - m_at; }
+
+ private:
+  template <typename T>
+  static double as(const unsigned char* raw) {
+    T value;
+    std::memcpy(&value, raw, sizeof(T));
+    return double(value);
+  }
+  static double decode(const unsigned char* raw, Ply_type type) {
+    switch (type) {
+      case Ply_type::int8:
+        return as<std::int8_t>(raw);
+      case Ply_type::uint8:
+        return as<std::uint8_t>(raw);
+      case Ply_type::int16:
+        return as<std::int16_t>(raw);
+      case Ply_type::uint16:
+        return as<std::uint16_t>(raw);
+      case Ply_type::int32:
+        return as<std::int32_t>(raw);
+      case Ply_type::uint32:
+        return as<std::uint32_t>(raw);
+      case Ply_type::float32:
+        return as<float>(raw);
+      case Ply_type::float64:
+        return as<double>(raw);
+    }
+    return 0;
+  }
+
+  const std::string& m_source;
+  std::string_view m_body;
+  Ply_format m_format;
+  Tokens m_tokens;       // ascii
+  std::size_t m_at = 0;  // binary
+};
+
+bool is_index_list(const Ply_property& p) {
+  return p.count_type && (p.name == "vertex_indices" || p.name == "vertex_index");
+}
+
+// Triangles of a strip, alternately turned so that all face the same way; -1 restarts the strip,
+// and the degenerate triangles strips use to turn are left out.
+void add_strip_triangles(const std::vector<double>& strip, Polygon_soup& soup) {
+  std::size_t run_start = 0;
+  for (std::size_t k = 0; k < strip.size(); ++k) {
+    if (strip[k] < 0) {
+      run_start = k + 1;
+      continue;
+    }
+    if (k < run_start + 2) continue;
+    std::size_t a = std::size_t(strip[k - 2]), b = std::size_t(strip[k - 1]);
+    const std::size_t c = std::size_t(strip[k]);
+    if ((k - run_start) % 2 == 1) std::swap(a, b);
+    if (a != b && b != c && a != c) soup.polygons.push_back({a, b, c});
+  }
+}
+
+}  // namespace
+
+Polygon_soup parse_ply(const std::string& source, std::string_view bytes) {
+  const Ply_header header = parse_ply_header(source, bytes);
+  Ply_values values(source, bytes.substr(header.body), header.format);
+  Polygon_soup soup;
+  bool has_points = false, has_faces = false;
+  std::vector<double> list;
+  for (const Ply_element& element : header.elements) {
+    const bool is_vertex = element.name == "vertex", is_face = element.name == "face",
+               is_strip = element.name == "tristrips";
+    int xyz_slot[3] = {-1, -1, -1};
+    if (is_vertex) {
+      for (std::size_t p = 0; p < element.properties.size(); ++p)
+        for (int axis = 0; axis < 3; ++axis)
+          if (element.properties[p].name == std::string(1, char('x' + axis)) &&
+              !element.properties[p].count_type)
+            xyz_slot[axis] = int(p);
+      if (std::count(xyz_slot, xyz_slot + 3, -1) > 0)
+        fail(source, "the vertex element has no x, y and z");
+      has_points = true;
+      soup.points.reserve(element.count);
+    }
+    has_faces = has_faces ||
+                ((is_face || is_strip) &&
+                 std::any_of(element.properties.begin(), element.properties.end(), is_index_list));
+    for (std::size_t row = 0; row < element.count; ++row) {
+      double xyz[3] = {0, 0, 0};
+      for (std::size_t p = 0; p < element.properties.size(); ++p) {
+        const Ply_property& property = element.properties[p];
+        if (!property.count_type) {
+          const double value = values.next(property.type);
+          for (int axis = 0; axis < 3; ++axis)
+            if (xyz_slot[axis] == int(p)) xyz[axis] = value;
+          continue;
+        }
+        const double count = values.next(*property.count_type);
+        if (!(count >= 0 && count <= double(values.values_left())) || count != std::floor(count))
+          fail(source, element.name + " " + std::to_string(row) + ": a list count of " +
+                           std::to_string(count) + " does not fit in the file");
+        list.resize(std::size_t(count));
+        for (double& item : list) item = values.next(property.type);
+        if (!((is_face || is_strip) && is_index_list(property))) continue;
+        for (const double index : list)
+          if (!(index == std::floor(index) && index < 1e18 &&
+                (index >= 0 || (is_strip && index == -1))))
+            fail(source, element.name + " " + std::to_string(row) + ": " + std::to_string(index) +
+                             " is not a vertex index");
+        if (is_strip)
+          add_strip_triangles(list, soup);
+        else
+          soup.polygons.emplace_back(list.begin(), list.end());
+      }
+      if (is_vertex) soup.points.emplace_back(xyz[0], xyz[1], xyz[2]);
+    }
+  }
+  if (!has_points) fail(source, "no vertex element");
+  if (!has_faces) fail(source, "no faces (no face or tristrips element with vertex_indices)");
+  return soup;
+}
+
+}  // namespace apps

@@ -1,0 +1,34 @@
+// The OFF and PLY readers of the apps: strict parsers of the whole file in memory, without
+// iostreams, that give a polygon soup or one error line. CGAL 5.5's own OFF and PLY readers have
+// undefined behaviour on some malformed files (fuzz/regressions/read_off, read_ply), and Debian
+// packages no PLY or OFF library short of assimp's whole-scene importer.
+#ifndef CGAL_POLICIES_APPS_SOUP_READERS_H
+#define CGAL_POLICIES_APPS_SOUP_READERS_H
+
+#include "Mesh_types.h"
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace apps {
+
+struct Polygon_soup {
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+};
+
+// OFF with an optional ST, C or N prefix (texture coordinates, colours and normals are skipped)
+// and # comments. Throws App_error(exit_bad_input, "<source>: <cause>").
+Polygon_soup parse_off(const std::string& source, std::string_view bytes);
+
+// PLY, ASCII or binary of either byte order: x, y, z of the "vertex" element, of any scalar type;
+// faces from the "face" element's vertex_indices (or vertex_index) list, or from the "tristrips"
+// element's list, where -1 restarts the strip. Other elements and properties are skipped.
+// Throws App_error(exit_bad_input, "<source>: <cause>").
+Polygon_soup parse_ply(const std::string& source, std::string_view bytes);
+
+}  // namespace apps
+
+#endif  // CGAL_POLICIES_APPS_SOUP_READERS_H

@@ -1,0 +1,48 @@
+// The invariants every fuzz target checks; a broken one aborts with its name, which libFuzzer
+// reports as a crash and saves the input for.
+#ifndef CGAL_POLICIES_FUZZ_FUZZ_CHECKS_H
+#define CGAL_POLICIES_FUZZ_FUZZ_CHECKS_H
+
+#include "common/App_error.h"
+#include "common/Mesh_types.h"
+
+#include <CGAL/boost/graph/helpers.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+namespace fuzz {
+
+inline void require(bool holds, const std::string& what) {
+  if (holds) return;
+  std::fprintf(stderr, "fuzz invariant broken: %s\n", what.c_str());
+  std::abort();
+}
+
+// An app's error: the expected exit code, and one line that says something.
+inline void require_one_line_error(const apps::App_error& error, apps::Exit_code expected) {
+  const std::string message = error.what();
+  require(error.code() == expected, "exit code " + std::to_string(error.code()) + " for '" +
+                                        message + "', expected " + std::to_string(expected));
+  require(!message.empty() && message.find('\n') == std::string::npos,
+          "an error message of one line: '" + message + "'");
+}
+
+// What every mesh handed to a policy or written by one is: a valid triangle mesh with finite
+// points and at least one face.
+inline void require_finite_triangle_mesh(const apps::Mesh& mesh, const std::string& whose) {
+  require(CGAL::is_valid_polygon_mesh(mesh), whose + ": a valid halfedge structure");
+  require(CGAL::is_triangle_mesh(mesh), whose + ": triangles only");
+  require(mesh.number_of_faces() > 0, whose + ": at least one face");
+  for (const auto v : mesh.vertices()) {
+    const apps::Point& p = mesh.point(v);
+    require(std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()),
+            whose + ": finite coordinates");
+  }
+}
+
+}  // namespace fuzz
+
+#endif  // CGAL_POLICIES_FUZZ_FUZZ_CHECKS_H

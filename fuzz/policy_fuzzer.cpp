@@ -1,0 +1,128 @@
+// Fuzzes every policy of the registry as simplify runs it, on small meshes built from the bytes
+// (fuzz_soup.h, repaired by the reader's pipeline) with options drawn from the bytes, each within
+// its documented range, and the passes around the run (small components, smoothing, fitting). The
+// output must be a valid triangle mesh with finite points, manifold when the input is; it meets
+// the face target or says why not; and when the run has a two-sided bound, the evaluator finds
+// no sample farther than it.
+#include "fuzz_checks.h"
+#include "fuzz_soup.h"
+
+#include "common/App_error.h"
+#include "common/fitting.h"
+#include "common/mesh_io.h"
+#include "common/mesh_measures.h"
+#include "common/policy_registry.h"
+#include "common/small_components.h"
+#include "common/smoothing.h"
+
+#include <cgal_policies/Two_sided_fitter.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace {
+
+using fuzz::require;
+
+// The settings come from this many bytes at the front (they need fewer); the mesh from the rest.
+constexpr int kSettingsBytes = 64;
+
+// A value of `option` from the bytes, within its range; whole numbers and open ranges are kept
+// small so that one input runs in well under a second.
+double option_value(const apps::Policy_option& option, fuzz::Byte_reader& bytes) {
+  if (option.is_flag) return 1;
+  const double low = std::isfinite(option.min) ? option.min : 0;
+  const double high = std::min(std::isfinite(option.max) ? option.max : low + 1,
+                               option.is_whole ? low + 20 : low + 1e9);
+  double value = low + bytes.unit() * (high - low);
+  if (option.is_whole) value = std::floor(value);
+  if (option.min_is_excluded && value <= option.min) value = option.default_value;
+  return value;
+}
+
+apps::Simplify_settings read_settings(const apps::Policy_entry& policy, std::size_t faces,
+                                      fuzz::Byte_reader& bytes) {
+  apps::Simplify_settings settings = apps::default_settings(policy, 0);
+  settings.target_faces = std::max<std::size_t>(1, std::size_t(std::llround(bytes.unit() * faces)));
+  if (bytes.u8() >= 128) settings.max_normal_angle_deg = bytes.unit() * 180;
+  for (const apps::Policy_option& option : policy.options)
+    if (bytes.u8() >= 128) settings.options[option.name] = option_value(option, bytes);
+  apps::check_policy_options(policy, settings.options);
+  if (policy.takes_error_bound && bytes.u8() >= 128) settings.max_error = 1e-4 + bytes.unit() * 0.2;
+  return settings;
+}
+
+std::size_t non_manifold_vertices(const apps::Mesh& mesh) {
+  return apps::check_mesh_validity(mesh).non_manifold_vertices;
+}
+
+// The evaluator's two-sided Hausdorff distance of `mesh` to `original` is within `bound` (a
+// fraction of the original's diagonal); it samples, so it never sees more than the true distance.
+void require_within(const apps::Mesh& original, const apps::Mesh& mesh, double bound,
+                    const std::string& after) {
+  const apps::Mesh_error error = apps::measure_mesh_error(original, mesh, 500);
+  require(error.hausdorff <= bound * error.bbox_diagonal * (1 + 1e-9),
+          after + ": two-sided Hausdorff " + std::to_string(error.hausdorff / error.bbox_diagonal) +
+              " of the diagonal, above the bound " + std::to_string(bound));
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  fuzz::Byte_reader bytes(data, size);
+  const auto& registry = apps::policy_registry();
+  const apps::Policy_entry& policy = registry[bytes.u8() % registry.size()];
+  const std::uint8_t passes = bytes.u8();  // which passes run around the policy, one bit each
+  const std::size_t min_component = passes & 1 ? bytes.u8() % 8 : 0;
+  fuzz::Byte_reader settings_bytes = bytes;  // the settings are read once the face count is known
+  for (int i = 0; i < kSettingsBytes; ++i) bytes.u8();
+  fuzz::Soup soup = fuzz::read_soup(bytes);
+  apps::Mesh mesh;
+  try {
+    mesh = apps::triangle_mesh_from_soup("soup", soup.points, soup.polygons);
+  } catch (const apps::App_error&) {
+    return 0;  // the repair fuzzer covers what the reader refuses
+  }
+  apps::Simplify_settings settings = read_settings(policy, mesh.number_of_faces(), settings_bytes);
+  const std::string run = policy.name + " to " + std::to_string(settings.target_faces) + " faces";
+
+  apps::drop_components_smaller_than(mesh, min_component);
+  const apps::Mesh original = mesh;
+  const bool manifold_input = non_manifold_vertices(original) == 0;
+  const apps::Simplify_outcome outcome = policy.run(mesh, settings);
+  mesh.collect_garbage();
+  if (passes & 2) apps::drop_smallest_components_until(mesh, settings.target_faces);
+
+  fuzz::require_finite_triangle_mesh(mesh, run);
+  require(!manifold_input || non_manifold_vertices(mesh) == 0, run + ": manifold output");
+  require(outcome.stop_reason != apps::Stop_reason::target_reached ||
+              mesh.number_of_faces() <= settings.target_faces,
+          run + ": the target is met when the run says so");
+  require(mesh.number_of_faces() <= original.number_of_faces(), run + ": no face added");
+  const double bound = apps::two_sided_bound(policy, settings);
+  if (bound > 0) require_within(original, mesh, bound, run);
+
+  if (passes & 4) {
+    apps::Smoothing_request smoothing;
+    smoothing.iterations = 1 + (passes >> 5) % 3;
+    smoothing.bounded = bound > 0;
+    apps::smooth_mesh(mesh, original, smoothing, bound);
+    fuzz::require_finite_triangle_mesh(mesh, run + ", smoothed");
+    if (bound > 0) require_within(original, mesh, bound, run + ", smoothed");
+  }
+  if (passes & 8) {
+    cgal_policies::Two_sided_fit_options options;
+    options.rounds = 1 + (passes >> 4) % 2;
+    options.min_input_samples = 2000;  // the default's 100,000 are slow in the sanitized build
+    options.max_normal_angle_deg = settings.max_normal_angle_deg;
+    options.tolerance = bound;
+    cgal_policies::Two_sided_fitter<apps::Mesh>(original, options).fit(mesh);
+    fuzz::require_finite_triangle_mesh(mesh, run + ", fitted");
+    require(!manifold_input || non_manifold_vertices(mesh) == 0, run + ", fitted: manifold");
+    if (bound > 0) require_within(original, mesh, bound, run + ", fitted");
+  }
+  return 0;
+}

@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# scripts/fuzz.sh HOURS [BUILD_DIR]: runs every libFuzzer target for HOURS in all (a fraction is
+# fine: CI runs 0.03), shared evenly between them, as many at a time as there are cores. Needs the
+# sanitized clang build that .ci/run makes (BUILD_DIR, default build-sanitize):
+#   CC=clang CXX=clang++ cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug \
+#     -DCGAL_POLICIES_SANITIZE=ON
+#   cmake --build build-sanitize
+# Each target starts from its seeds (fuzz/corpus/<target>) and what earlier runs found
+# (out/fuzz/<target>/corpus); findings go to out/fuzz/<target>/ as crash-*, leak-*, timeout-* or
+# oom-* files. Prints a line per target (executions, coverage, corpus, findings); exits 1 when a
+# target found something, 2 on bad usage. FUZZ_SEED fixes libFuzzer's seed (CI sets it).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+hours=${1:-}
+build=${2:-build-sanitize}
+if ! [[ "$hours" =~ ^[0-9]*\.?[0-9]+$ ]]; then
+  echo "usage: scripts/fuzz.sh HOURS [BUILD_DIR]   (HOURS: a positive number, e.g. 0.5)" >&2
+  exit 2
+fi
+targets=(read_obj read_ply read_off read_stl repair command_line policies)
+for target in "${targets[@]}"; do
+  if [ ! -x "$build/bin/fuzz_$target" ]; then
+    echo "fuzz.sh: $build/bin/fuzz_$target is missing (see the comment at the top of this script)" >&2
+    exit 2
+  fi
+done
+seconds_each=$(awk -v h="$hours" -v n=${#targets[@]} 'BEGIN { s = int(h * 3600 / n); print s < 1 ? 1 : s }')
+jobs=$(nproc)
+
+dictionary() {
+  case "$1" in
+    read_*) echo "fuzz/${1#read_}.dict" ;;
+    command_line) echo "fuzz/command_line.dict" ;;
+  esac
+}
+
+run_target() {
+  local target=$1 work="out/fuzz/$1" dict
+  mkdir -p "$work/corpus"
+  dict=$(dictionary "$target")
+  # -timeout=10: an input that runs longer is a hang (issue 15); leaks are findings too.
+  "$build/bin/fuzz_$target" "$work/corpus" "fuzz/corpus/$target" \
+    ${dict:+-dict="$dict"} ${FUZZ_SEED:+-seed="$FUZZ_SEED"} -max_total_time="$seconds_each" -timeout=10 -rss_limit_mb=4096 \
+    -print_final_stats=1 -artifact_prefix="$work/" >"$work/log.txt" 2>&1 || true
+}
+
+export ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1
+export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp:print_suppressions=0"
+echo "fuzz.sh: ${#targets[@]} targets, $seconds_each s each, $jobs at a time" >&2
+for target in "${targets[@]}"; do
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n; done
+  run_target "$target" &
+done
+wait
+
+found=0
+printf '%-14s %8s %12s %8s %8s %8s %s\n' target seconds executions cov features corpus findings
+for target in "${targets[@]}"; do
+  work="out/fuzz/$target"
+  execs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$work/log.txt" | awk '{print $2}' | tail -1)
+  last=$(grep -E '^#[0-9]+' "$work/log.txt" | grep -o 'cov: [0-9]* ft: [0-9]*' | tail -1)
+  findings=$(find "$work" -maxdepth 1 -name 'crash-*' -o -maxdepth 1 -name 'leak-*' \
+    -o -maxdepth 1 -name 'timeout-*' -o -maxdepth 1 -name 'oom-*' | wc -l)
+  [ "$findings" -gt 0 ] && found=1
+  printf '%-14s %8s %12s %8s %8s %8s %s\n' "$target" "$seconds_each" "${execs:-?}" \
+    "$(echo "$last" | awk '{print $2}')" "$(echo "$last" | awk '{print $4}')" \
+    "$(ls "$work/corpus" | wc -l)" "$findings"
+  if grep -q -E '^==[0-9]+==ERROR|fuzz invariant broken|deadly signal' "$work/log.txt"; then
+    grep -m3 -E 'ERROR|invariant broken|deadly signal|SUMMARY' "$work/log.txt" | sed "s|^|  $target: |"
+    found=1
+  fi
+done
+exit $found
