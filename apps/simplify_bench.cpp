@@ -91,9 +91,7 @@ std::vector<std::string> split_list(const std::string& text) {
 }
 
 std::size_t positive_count(const std::optional<double>& value, const std::string& option) {
-  if (value && !(*value >= 1 && *value == std::floor(*value)))
-    throw App_error(exit_usage, option + " must be a whole number of at least 1");
-  return value ? std::size_t(*value) : 0;
+  return value ? std::size_t(check_whole_number(*value, 1, kMaxCount, option)) : 0;
 }
 
 std::vector<Bench_target> ad_hoc_targets(const std::optional<std::string>& ratios,
@@ -169,8 +167,8 @@ int run(int argc, char** argv) {
   const std::size_t repetitions = positive_count(cli.take_number("repetitions"), "--repetitions");
   const std::size_t samples = positive_count(cli.take_number("samples"), "--samples");
   const std::optional<double> time_limit = cli.take_number("time-limit");
-  if (time_limit && !(*time_limit >= 0))
-    throw App_error(exit_usage, "--time-limit must be at least 0 seconds");
+  if (time_limit && !(*time_limit >= 0 && *time_limit <= kMaxTimeLimitSeconds))
+    throw App_error(exit_usage, "--time-limit must be a number of seconds in [0, 1e9]");
   const std::optional<std::string> out = cli.take_value("out");
   const bool fit_all = cli.take_flag("fit");
 

@@ -4,8 +4,7 @@ if(CGAL_POLICIES_SANITIZE)
   add_link_options(-fsanitize=address,undefined)
 endif()
 
-# The fuzz targets (fuzz/) live in the sanitized build: with clang, every target of that build is
-# compiled with libFuzzer's coverage instrumentation, and only the fuzz targets link its driver.
+# The fuzz targets (fuzz/) live in the sanitized build, made by clang.
 if(CGAL_POLICIES_SANITIZE AND CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
   set(CGAL_POLICIES_FUZZ_DEFAULT ON)
 else()
@@ -16,14 +15,14 @@ if(CGAL_POLICIES_FUZZ)
   if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang" OR NOT CGAL_POLICIES_SANITIZE)
     message(FATAL_ERROR "CGAL_POLICIES_FUZZ needs clang and CGAL_POLICIES_SANITIZE=ON")
   endif()
-  add_compile_options(-fsanitize=fuzzer-no-link)
 endif()
 
-# -O1 for the code the fuzz targets run (the apps' library and the targets themselves): CGAL code
-# built at -O0 runs too slowly to fuzz. The rest of the sanitized build stays at -O0, which
-# compiles faster. Either way a Debug build defines no NDEBUG: CGAL's assertions stay on.
-function(cgal_policies_optimize_when_fuzzing target)
+# What the fuzz targets run (the apps' library and the targets themselves) is built with
+# libFuzzer's coverage instrumentation, and at -O1: CGAL code at -O0 runs too slowly to fuzz. The
+# rest of the sanitized build (the tests, the apps' mains) has neither, which keeps it fast to
+# build and to run. A Debug build defines no NDEBUG either way: CGAL's assertions stay on.
+function(cgal_policies_instrument_for_fuzzing target)
   if(CGAL_POLICIES_FUZZ)
-    target_compile_options(${target} PRIVATE -O1)
+    target_compile_options(${target} PRIVATE -O1 -fsanitize=fuzzer-no-link)
   endif()
 endfunction()

@@ -51,19 +51,23 @@ void require_checked(const apps::Simplify_request& request) {
   require(settings.max_normal_angle_deg >= 0 && settings.max_normal_angle_deg <= 180,
           "--max-normal-angle in [0, 180]");
   require(std::isfinite(settings.max_error) && settings.max_error >= 0, "--max-error >= 0");
-  require(std::isfinite(settings.time_limit_seconds) && settings.time_limit_seconds >= 0,
-          "--time-limit >= 0");
+  require(
+      settings.time_limit_seconds >= 0 && settings.time_limit_seconds <= apps::kMaxTimeLimitSeconds,
+      "--time-limit in [0, 1e9]");
   require(std::isfinite(request.merge_distance) && request.merge_distance >= 0,
           "--merge-distance >= 0");
   require(std::isfinite(request.bound) && request.bound >= 0, "the run's bound >= 0");
   const auto& ratio = request.target.ratio();
   require(ratio ? *ratio > 0 && *ratio <= 1 : request.target.of(0) >= 1,
           "a ratio in (0, 1] or at least one face");
-  require(request.smoothing.iterations >= 0, "--smooth >= 0");
+  require(request.smoothing.iterations >= 0 && request.smoothing.iterations <= 10000,
+          "--smooth in [0, 10000]");
   require(request.smoothing.rate > 0 && request.smoothing.rate <= 1, "--smooth-rate in (0, 1]");
   require(!request.fit.enabled || (request.fit.rounds >= 1 && request.fit.rounds <= 1000),
           "--fit-rounds in [1, 1000]");
-  require(!request.samples || *request.samples >= 1, "--samples >= 1");
+  require(!request.samples || (*request.samples >= 1 && *request.samples <= apps::kMaxCount),
+          "--samples in [1, 1e15]");
+  require(request.target.ratio() || request.target.of(0) <= apps::kMaxCount, "--faces <= 1e15");
 }
 
 }  // namespace

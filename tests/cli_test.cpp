@@ -209,15 +209,19 @@ TEST_F(Cli, OptionsOutOfRangeAreRefusedBeforeTheInputIsRead) {
   }
 }
 
-// Counts beyond what a size_t or an int holds are refused, not converted (that conversion is
-// undefined behaviour, which UBSan reports in the sanitized build).
+// Counts beyond what a size_t or an int holds, and time limits beyond what the clock holds, are
+// refused, not converted (that conversion is undefined behaviour, which UBSan reports in the
+// sanitized build).
 TEST_F(Cli, CountsTooLargeForTheirTypeAreRefused) {
   const fs::path in = file("missing.off"), out = file("out.off");
   const std::string io = in.string() + " " + out.string() + " ";
   for (const auto& [option, arguments] : std::vector<std::pair<std::string, std::string>>{
            {"--faces", "--faces 1e30"},
            {"--samples", "0.5 --samples 1e30"},
-           {"--min-component", "0.5 --min-component 1e30"}}) {
+           {"--min-component", "0.5 --min-component 1e30"},
+           {"--smooth", "0.5 --smooth 1e30"},
+           {"--time-limit", "0.5 --time-limit 1e300"},
+           {"--fit-rounds", "0.5 --fit --fit-rounds 1e30"}}) {
     const Command_result r = run("simplify", io + arguments);
     EXPECT_EQ(r.exit_code, 2) << arguments << ": " << r.err;
     EXPECT_NE(r.err.find(option), std::string::npos) << r.err;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <sstream>
 
 namespace apps {
 
@@ -42,6 +43,13 @@ std::optional<double> Command_line::take_number(const std::string& name) {
   return parse_number(*text, "--" + name);
 }
 
+std::optional<double> Command_line::take_whole_number(const std::string& name, double min,
+                                                      double max) {
+  const std::optional<double> value = take_number(name);
+  if (value) check_whole_number(*value, min, max, "--" + name);
+  return value;
+}
+
 std::vector<std::string> Command_line::positionals() const {
   for (const std::string& a : m_args)
     if (a.size() > 1 && a[0] == '-' && !std::isdigit(static_cast<unsigned char>(a[1])) &&
@@ -55,6 +63,19 @@ double parse_number(const std::string& text, const std::string& what) {
   const double value = std::strtod(text.c_str(), &end);
   if (text.empty() || *end != '\0' || !std::isfinite(value))
     throw App_error(exit_usage, what + ": '" + text + "' is not a finite number");
+  return value;
+}
+
+}  // namespace apps
+
+namespace apps {
+
+double check_whole_number(double value, double min, double max, const std::string& what) {
+  if (!(value >= min && value <= max && value == std::floor(value))) {
+    std::ostringstream range;
+    range << what << " must be a whole number in [" << min << ", " << max << "]";
+    throw App_error(exit_usage, range.str());
+  }
   return value;
 }
 

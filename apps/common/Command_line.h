@@ -19,6 +19,9 @@ class Command_line {
   std::optional<std::string> take_value(const std::string& name);
   // As take_value, read as a finite number.
   std::optional<double> take_number(const std::string& name);
+  // As take_number, a whole number in [min, max]; App_error(exit_usage) naming the option and the
+  // range otherwise. The bounds keep every value within what the caller's integer type holds.
+  std::optional<double> take_whole_number(const std::string& name, double min, double max);
 
   // The arguments left once every option was taken; an option left over is unknown.
   std::vector<std::string> positionals() const;
@@ -29,6 +32,15 @@ class Command_line {
 
 // Parses a finite number; App_error(exit_usage) naming `what` otherwise.
 double parse_number(const std::string& text, const std::string& what);
+
+// `value` when it is a whole number in [min, max]; App_error(exit_usage) naming `what` otherwise.
+double check_whole_number(double value, double min, double max, const std::string& what);
+
+// The largest count the apps take (--faces, --samples, --min-component): far beyond any mesh, and
+// exactly representable both as a double and as a size_t.
+constexpr double kMaxCount = 1e15;
+// The largest --time-limit (31 years): a larger one would overflow the steady clock's deadline.
+constexpr double kMaxTimeLimitSeconds = 1e9;
 
 }  // namespace apps
 

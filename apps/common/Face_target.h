@@ -4,6 +4,7 @@
 #define CGAL_POLICIES_APPS_FACE_TARGET_H
 
 #include "App_error.h"
+#include "Command_line.h"
 
 #include <cmath>
 #include <cstddef>
@@ -18,9 +19,7 @@ class Face_target {
   Face_target(std::optional<double> ratio, std::optional<double> faces) : m_ratio(ratio) {
     if (ratio && faces) throw App_error(exit_usage, "give a ratio or --faces, not both");
     if (faces) {
-      if (!(*faces >= 1 && *faces == std::floor(*faces) && *faces < 1e18))
-        throw App_error(exit_usage, "--faces must be a whole number of at least 1");
-      m_faces = std::size_t(*faces);
+      m_faces = std::size_t(check_whole_number(*faces, 1, kMaxCount, "--faces"));
       return;
     }
     if (!ratio) throw App_error(exit_usage, "give RATIO, --ratio or --faces (see --help)");

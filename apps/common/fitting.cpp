@@ -5,7 +5,6 @@
 #include <cgal_policies/Two_sided_fitter.h>
 
 #include <chrono>
-#include <cmath>
 
 namespace apps {
 
@@ -23,10 +22,8 @@ Fit_request take_fit_options(Command_line& cli) {
   Fit_request request;
   request.enabled = cli.take_flag("fit");
   request.rounds = cgal_policies::Two_sided_fit_options().rounds;
-  if (const auto rounds = cli.take_number("fit-rounds")) {
+  if (const auto rounds = cli.take_whole_number("fit-rounds", 1, 1000)) {
     if (!request.enabled) throw App_error(exit_usage, "--fit-rounds goes with --fit");
-    if (!(*rounds >= 1 && *rounds <= 1000 && *rounds == std::floor(*rounds)))
-      throw App_error(exit_usage, "--fit-rounds must be a whole number in [1, 1000]");
     request.rounds = int(*rounds);
   }
   return request;

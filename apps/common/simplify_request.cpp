@@ -3,21 +3,9 @@
 #include "App_error.h"
 #include "mesh_io.h"
 
-#include <cmath>
 #include <vector>
 
 namespace apps {
-namespace {
-
-// A whole number of at least 0 for `option`, 0 when not given.
-std::size_t take_count(Command_line& cli, const std::string& option) {
-  const double value = cli.take_number(option).value_or(0);
-  if (!(value >= 0 && value == std::floor(value) && value < 1e18))
-    throw App_error(exit_usage, "--" + option + " must be a whole number of at least 0");
-  return std::size_t(value);
-}
-
-}  // namespace
 
 Simplify_request take_simplify_request(Command_line& cli) {
   Simplify_request request;
@@ -25,19 +13,20 @@ Simplify_request take_simplify_request(Command_line& cli) {
   const Policy_entry& policy = *request.choice.policy;
   Simplify_settings& settings = request.choice.settings;
   std::optional<double> ratio = cli.take_number("ratio");
-  const std::optional<double> faces = cli.take_number("faces");
-  const std::optional<double> samples = cli.take_number("samples");
+  const std::optional<double> faces = cli.take_whole_number("faces", 1, kMaxCount);
+  const std::optional<double> samples = cli.take_whole_number("samples", 1, kMaxCount);
   const std::optional<double> max_error = cli.take_number("max-error");
   request.merge_distance = cli.take_number("merge-distance").value_or(0.0);
   if (!(request.merge_distance >= 0))
     throw App_error(exit_usage, "--merge-distance must be at least 0");
   settings.time_limit_seconds = cli.take_number("time-limit").value_or(0.0);
-  if (!(settings.time_limit_seconds >= 0))
-    throw App_error(exit_usage, "--time-limit must be a number of seconds of at least 0");
+  if (!(settings.time_limit_seconds >= 0 && settings.time_limit_seconds <= kMaxTimeLimitSeconds))
+    throw App_error(exit_usage, "--time-limit must be a number of seconds in [0, 1e9]");
   if (settings.time_limit_seconds > 0 && !policy.takes_time_limit)
     throw App_error(exit_usage, "--time-limit needs an edge-collapse policy; " + policy.name +
                                     " runs its own engine (try classic)");
-  request.min_component = take_count(cli, "min-component");
+  request.min_component =
+      std::size_t(cli.take_whole_number("min-component", 0, kMaxCount).value_or(0));
   request.drop_small_pieces = cli.take_flag("drop-small-pieces");
   request.smoothing = take_smoothing_options(cli);
   request.fit = take_fit_options(cli);
@@ -58,8 +47,6 @@ Simplify_request take_simplify_request(Command_line& cli) {
     ratio = parse_number(args[2], "RATIO");
   }
   request.target = Face_target(ratio, faces);
-  if (samples && !(*samples >= 1 && *samples == std::floor(*samples) && *samples < 1e18))
-    throw App_error(exit_usage, "--samples must be a whole number of at least 1");
   if (samples) request.samples = std::size_t(*samples);
   request.bound = two_sided_bound(policy, settings);
   if (request.smoothing.bounded && !(request.bound > 0))

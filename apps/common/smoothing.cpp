@@ -4,17 +4,12 @@
 
 #include <cgal_policies/Hausdorff_move_guard.h>
 
-#include <cmath>
-
 namespace apps {
 
 Smoothing_request take_smoothing_options(Command_line& cli) {
   Smoothing_request request;
-  if (const auto n = cli.take_number("smooth")) {
-    if (*n < 0 || *n != std::floor(*n))
-      throw App_error(exit_usage, "--smooth must be a whole number of iterations, at least 0");
-    request.iterations = int(*n);
-  }
+  // Each pass is linear in the mesh: 10,000 are hours on a large scan, and more never end.
+  if (const auto n = cli.take_whole_number("smooth", 0, 10000)) request.iterations = int(*n);
   if (const auto rate = cli.take_number("smooth-rate")) {
     if (!(*rate > 0 && *rate <= 1)) throw App_error(exit_usage, "--smooth-rate must be in (0, 1]");
     request.rate = *rate;
@@ -36,7 +31,8 @@ Smoothing_request take_smoothing_options(Command_line& cli) {
 }
 
 std::string smoothing_help() {
-  return "  --smooth N            N passes of Laplacian smoothing after simplifying (default 0)\n"
+  return "  --smooth N            N passes of Laplacian smoothing after simplifying, 0..10000\n"
+         "                        (default 0)\n"
          "  --smooth-rate R       lambda, 0 < R <= 1 (default 0.5)\n"
          "  --smooth-weights W    uniform (default) or inverse-distance\n"
          "  --smooth-method M     laplacian (default) or taubin (lambda, then mu = -0.53)\n"
