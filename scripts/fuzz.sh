@@ -40,8 +40,9 @@ run_target() {
   dict=$(dictionary "$target")
   # -timeout=10: an input that runs longer is a hang (issue 15); leaks are findings too.
   "$build/bin/fuzz_$target" "$work/corpus" "fuzz/corpus/$target" \
-    ${dict:+-dict="$dict"} ${FUZZ_SEED:+-seed="$FUZZ_SEED"} -max_total_time="$seconds_each" -timeout=10 -rss_limit_mb=4096 \
-    -print_final_stats=1 -artifact_prefix="$work/" >"$work/log.txt" 2>&1 || true
+    ${dict:+-dict="$dict"} ${FUZZ_SEED:+-seed="$FUZZ_SEED"} -max_total_time="$seconds_each" \
+    -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 -artifact_prefix="$work/" \
+    >"$work/log.txt" 2>&1 || true
 }
 
 export ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1
@@ -57,10 +58,13 @@ found=0
 printf '%-14s %8s %12s %8s %8s %8s %s\n' target seconds executions cov features corpus findings
 for target in "${targets[@]}"; do
   work="out/fuzz/$target"
-  execs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$work/log.txt" | awk '{print $2}' | tail -1)
-  last=$(grep -E '^#[0-9]+' "$work/log.txt" | grep -o 'cov: [0-9]* ft: [0-9]*' | tail -1)
-  findings=$(find "$work" -maxdepth 1 -name 'crash-*' -o -maxdepth 1 -name 'leak-*' \
-    -o -maxdepth 1 -name 'timeout-*' -o -maxdepth 1 -name 'oom-*' | wc -l)
+  # A target that stopped on a finding prints no final statistics: those fields are then "?".
+  execs=$( (grep -o 'stat::number_of_executed_units: [0-9]*' "$work/log.txt" || true) |
+    awk '{print $2}' | tail -1)
+  last=$( (grep -E '^#[0-9]+' "$work/log.txt" || true) | grep -o 'cov: [0-9]* ft: [0-9]*' |
+    tail -1 || true)
+  findings=$(find "$work" -maxdepth 1 \( -name 'crash-*' -o -name 'leak-*' -o -name 'timeout-*' \
+    -o -name 'oom-*' \) | wc -l)
   [ "$findings" -gt 0 ] && found=1
   printf '%-14s %8s %12s %8s %8s %8s %s\n' "$target" "$seconds_each" "${execs:-?}" \
     "$(echo "$last" | awk '{print $2}')" "$(echo "$last" | awk '{print $4}')" \
