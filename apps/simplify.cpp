@@ -4,6 +4,7 @@
 #include "common/Json_object.h"
 #include "common/Progress_bar.h"
 #include "common/Removed_on_interrupt.h"
+#include "common/Stopwatch.h"
 #include "common/app_main.h"
 #include "common/atomic_write.h"
 #include "common/fitting.h"
@@ -21,7 +22,6 @@
 #include "snapshot.h"
 #endif
 
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -132,10 +132,6 @@ void write_mesh_and_snapshot([[maybe_unused]] const Mesh& original, const Mesh& 
 #endif
 }
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 int run(int argc, char** argv) {
   Command_line cli(argc, argv);
   if (cli.take_flag("help", "-h")) {
@@ -153,9 +149,9 @@ int run(int argc, char** argv) {
   const bool quiet = request.quiet, measure = request.measure;
 
   Read_report read_report;
-  const auto read_start = std::chrono::steady_clock::now();
+  const Stopwatch reading;
   Mesh mesh = read_triangle_mesh(input, &read_report);
-  const double read_seconds = seconds_since(read_start);
+  const double read_seconds = reading.seconds();
   if (!quiet)
     for (const std::string& repair : read_report.repairs)
       std::cerr << "simplify: " << input << ": " << repair << '\n';
@@ -186,9 +182,9 @@ int run(int argc, char** argv) {
       fit.enabled
           ? fit_to_input(mesh, original, fit.rounds, settings.max_normal_angle_deg, request.bound)
           : Fit_outcome();
-  const auto write_start = std::chrono::steady_clock::now();
+  const Stopwatch writing;
   write_mesh_and_snapshot(original, mesh, policy->name, snapshot, output);
-  const double write_seconds = seconds_since(write_start);
+  const double write_seconds = writing.seconds();
 
   const std::size_t removed = input_faces - mesh.number_of_faces();
   Json_object report;

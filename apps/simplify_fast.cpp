@@ -3,12 +3,12 @@
 #include "common/App_error.h"
 #include "common/Command_line.h"
 #include "common/Stop_reason.h"
+#include "common/Stopwatch.h"
 #include "common/app_main.h"
 #include "common/mesh_io.h"
 
 #include <cgal_policies/Fast_threshold_simplifier.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -35,11 +35,10 @@ int run(int argc, char** argv) {
 
   Mesh mesh = read_triangle_mesh(args[0]);
   const std::size_t input_faces = mesh.number_of_faces();
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   const auto report = cgal_policies::Fast_threshold_simplifier()(
       mesh, std::size_t(std::llround(ratio * double(input_faces))));
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = watch.seconds();
   write_mesh_atomically(mesh, args[1]);
   std::printf("%zu -> %zu faces in %.3f s (%s)\n", input_faces, std::size_t(mesh.number_of_faces()),
               seconds,

@@ -5,8 +5,7 @@
 
 #include "common/App_error.h"
 #include "common/Mesh_types.h"
-
-#include <CGAL/boost/graph/helpers.h>
+#include "common/mesh_measures.h"
 
 #include <cmath>
 #include <cstdio>
@@ -30,17 +29,19 @@ inline void require_one_line_error(const apps::App_error& error, apps::Exit_code
           "an error message of one line: '" + message + "'");
 }
 
-// What every mesh handed to a policy or written by one is: a valid triangle mesh with finite
-// points and at least one face.
-inline void require_finite_triangle_mesh(const apps::Mesh& mesh, const std::string& whose) {
-  require(CGAL::is_valid_polygon_mesh(mesh), whose + ": a valid halfedge structure");
-  require(CGAL::is_triangle_mesh(mesh), whose + ": triangles only");
-  require(mesh.number_of_faces() > 0, whose + ": at least one face");
+// What every mesh read or written is: a valid triangle mesh (mesh_measures' validity) with finite
+// points and at least one face. Returns the validity figures, for the checks that follow.
+inline apps::Mesh_validity require_finite_triangle_mesh(const apps::Mesh& mesh,
+                                                        const std::string& whose) {
+  const apps::Mesh_validity validity = apps::check_mesh_validity(mesh);
+  require(validity.valid, whose + ": a valid halfedge structure of triangles");
+  require(validity.faces > 0, whose + ": at least one face");
   for (const auto v : mesh.vertices()) {
     const apps::Point& p = mesh.point(v);
     require(std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()),
             whose + ": finite coordinates");
   }
+  return validity;
 }
 
 }  // namespace fuzz

@@ -55,10 +55,6 @@ apps::Simplify_settings read_settings(const apps::Policy_entry& policy, std::siz
   return settings;
 }
 
-std::size_t non_manifold_vertices(const apps::Mesh& mesh) {
-  return apps::check_mesh_validity(mesh).non_manifold_vertices;
-}
-
 // The evaluator's two-sided Hausdorff distance of `mesh` to `original` is within `bound` (a
 // fraction of the original's diagonal); it samples, so it never sees more than the true distance.
 void require_within(const apps::Mesh& original, const apps::Mesh& mesh, double bound,
@@ -91,29 +87,34 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   apps::drop_components_smaller_than(mesh, min_component);
   const apps::Mesh original = mesh;
-  const bool manifold_input = non_manifold_vertices(original) == 0;
+  const bool manifold_input =
+      fuzz::require_finite_triangle_mesh(original, "the input").non_manifold_vertices == 0;
+  // Valid, finite, manifold when the input is, and within the run's bound when it has one.
+  const auto require_sound = [&](double bound, const std::string& after) {
+    const apps::Mesh_validity validity = fuzz::require_finite_triangle_mesh(mesh, after);
+    require(!manifold_input || validity.non_manifold_vertices == 0, after + ": manifold");
+    if (bound > 0) require_within(original, mesh, bound, after);
+  };
   const apps::Simplify_outcome outcome = policy.run(mesh, settings);
   mesh.collect_garbage();
   double bound = apps::two_sided_bound(policy, settings);
-  if (bound > 0) require_within(original, mesh, bound, run);
-  // Pieces dropped whole are gone from the output by the user's choice: no bound holds after it.
-  if ((passes & 2) && apps::drop_smallest_components_until(mesh, settings.target_faces).faces > 0)
-    bound = 0;
-
-  fuzz::require_finite_triangle_mesh(mesh, run);
-  require(!manifold_input || non_manifold_vertices(mesh) == 0, run + ": manifold output");
+  require_sound(bound, run);
   require(outcome.stop_reason != apps::Stop_reason::target_reached ||
               mesh.number_of_faces() <= settings.target_faces,
           run + ": the target is met when the run says so");
   require(mesh.number_of_faces() <= original.number_of_faces(), run + ": no face added");
+  // Pieces dropped whole are gone from the output by the user's choice: no bound holds after it.
+  if ((passes & 2) && apps::drop_smallest_components_until(mesh, settings.target_faces).faces > 0) {
+    bound = 0;
+    require_sound(bound, run + ", pieces dropped");
+  }
 
   if (passes & 4) {
     apps::Smoothing_request smoothing;
     smoothing.iterations = 1 + (passes >> 5) % 3;
     smoothing.bounded = bound > 0;
     apps::smooth_mesh(mesh, original, smoothing, bound);
-    fuzz::require_finite_triangle_mesh(mesh, run + ", smoothed");
-    if (bound > 0) require_within(original, mesh, bound, run + ", smoothed");
+    require_sound(bound, run + ", smoothed");
   }
   if (passes & 8) {
     cgal_policies::Two_sided_fit_options options;
@@ -122,9 +123,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     options.max_normal_angle_deg = settings.max_normal_angle_deg;
     options.tolerance = bound;
     cgal_policies::Two_sided_fitter<apps::Mesh>(original, options).fit(mesh);
-    fuzz::require_finite_triangle_mesh(mesh, run + ", fitted");
-    require(!manifold_input || non_manifold_vertices(mesh) == 0, run + ", fitted: manifold");
-    if (bound > 0) require_within(original, mesh, bound, run + ", fitted");
+    require_sound(bound, run + ", fitted");
   }
   return 0;
 }

@@ -1,10 +1,10 @@
 #include "bench_runner.h"
 
 #include "Run_memory_probe.h"
+#include "common/Stopwatch.h"
 #include "common/mesh_io.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -16,8 +16,7 @@ namespace {
 // Progress lines on stderr: which case, how many runs are left, the time elapsed.
 class Bench_progress {
  public:
-  explicit Bench_progress(std::size_t total_runs)
-      : m_total(total_runs), m_start(std::chrono::steady_clock::now()) {}
+  explicit Bench_progress(std::size_t total_runs) : m_total(total_runs) {}
 
   void start_run(const std::string& what) {
     ++m_done;
@@ -26,13 +25,11 @@ class Bench_progress {
                  m_total - m_done, elapsed / 60, elapsed % 60, what.c_str());
   }
 
-  double elapsed_seconds() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
-  }
+  double elapsed_seconds() const { return m_watch.seconds(); }
 
  private:
   std::size_t m_total, m_done = 0;
-  std::chrono::steady_clock::time_point m_start;
+  Stopwatch m_watch;
 };
 
 double median(std::vector<double> values) {

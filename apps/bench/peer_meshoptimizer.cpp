@@ -2,11 +2,10 @@
 // arrays, as a game engine would run it. Only the meshopt_simplify call is timed; the conversions
 // to and from its arrays are not part of the method.
 #include "bench_peers.h"
+#include "common/Stopwatch.h"
 #include "peer_mesh.h"
 
 #include <meshoptimizer.h>
-
-#include <chrono>
 
 namespace apps {
 namespace {
@@ -24,12 +23,12 @@ Simplify_outcome run_meshoptimizer(Mesh& mesh, const Simplify_settings& settings
 
   // A relative target error of 1 is the whole extent of the mesh: only the face count stops it.
   const float kNoErrorLimit = 1.0f;
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   const std::size_t count = meshopt_simplify(
       output.data(), indices.data(), indices.size(), positions.data(), input.points.size(),
       3 * sizeof(float), 3 * settings.target_faces, kNoErrorLimit, 0, nullptr);
   Simplify_outcome outcome;
-  outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  outcome.seconds = watch.seconds();
 
   // meshopt keeps the input's vertices, so the result takes their exact (double) positions.
   Indexed_triangles result{input.points, {}};

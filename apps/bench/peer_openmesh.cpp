@@ -2,14 +2,13 @@
 // collapse that turns a face normal by more than the settings' angle). Initialisation and
 // decimation are timed; the conversions to and from OpenMesh are not.
 #include "bench_peers.h"
+#include "common/Stopwatch.h"
 #include "peer_mesh.h"
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
 #include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
-
-#include <chrono>
 
 namespace apps {
 namespace {
@@ -31,7 +30,7 @@ Simplify_outcome run_openmesh(Mesh& mesh, const Simplify_settings& settings) {
   om.update_face_normals();
 
   Simplify_outcome outcome;
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   {
     OpenMesh::Decimater::DecimaterT<Open_mesh> decimater(om);
     OpenMesh::Decimater::ModQuadricT<Open_mesh>::Handle quadric;
@@ -41,8 +40,7 @@ Simplify_outcome run_openmesh(Mesh& mesh, const Simplify_settings& settings) {
     decimater.module(flipping).set_max_normal_deviation(settings.max_normal_angle_deg);
     decimater.initialize();
     decimater.decimate_to_faces(0, settings.target_faces);
-    outcome.seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    outcome.seconds = watch.seconds();
     om.garbage_collection();  // while the decimater still holds the status flags it marked
   }
 

@@ -66,10 +66,6 @@ double parse_number(const std::string& text, const std::string& what) {
   return value;
 }
 
-}  // namespace apps
-
-namespace apps {
-
 double check_whole_number(double value, double min, double max, const std::string& what) {
   if (!(value >= min && value <= max && value == std::floor(value))) {
     std::ostringstream range;

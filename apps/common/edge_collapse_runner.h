@@ -4,6 +4,7 @@
 #ifndef CGAL_POLICIES_APPS_EDGE_COLLAPSE_RUNNER_H
 #define CGAL_POLICIES_APPS_EDGE_COLLAPSE_RUNNER_H
 
+#include "Stopwatch.h"
 #include "policy_registry.h"
 
 #include <cgal_policies/Hausdorff_bounded_filter.h>
@@ -104,7 +105,7 @@ Simplify_outcome run_edge_collapse(Mesh& mesh, const Simplify_settings& settings
                                    const GetCost& cost, const GetPlacement& placement,
                                    const Filter& filter,
                                    Error_bound_keeper keeper = Error_bound_keeper::runner) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   Pending_collapse pending;
   std::optional<Stop_reason> stopped;
   const Face_count_stop_predicate stop(mesh, settings.target_faces, settings.time_limit_seconds,
@@ -125,7 +126,7 @@ Simplify_outcome run_edge_collapse(Mesh& mesh, const Simplify_settings& settings
     collapse(filter);
   pending.report(settings);
   Simplify_outcome outcome;
-  outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  outcome.seconds = watch.seconds();
   // Unless the predicate stopped the run, the queue ran dry (possibly right at the target).
   if (!stopped && mesh.number_of_faces() <= settings.target_faces)
     stopped = Stop_reason::target_reached;

@@ -1,10 +1,9 @@
 #include "fitting.h"
 
 #include "App_error.h"
+#include "Stopwatch.h"
 
 #include <cgal_policies/Two_sided_fitter.h>
-
-#include <chrono>
 
 namespace apps {
 
@@ -44,14 +43,14 @@ double two_sided_bound(const Policy_entry& policy, const Simplify_settings& sett
 
 Fit_outcome fit_to_input(Mesh& mesh, const Mesh& original, int rounds, double max_normal_angle_deg,
                          double bound) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   cgal_policies::Two_sided_fit_options options;
   options.rounds = rounds;
   options.max_normal_angle_deg = max_normal_angle_deg;
   options.tolerance = bound;
   Fit_outcome outcome;
   outcome.report = cgal_policies::Two_sided_fitter<Mesh>(original, options).fit(mesh);
-  outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  outcome.seconds = watch.seconds();
   return outcome;
 }
 

@@ -1,11 +1,10 @@
 // The fast threshold QEM (docs/fast.md): it runs its own flat-array engine, not edge_collapse, and
 // is timed and reported like the others (conversions to and from the arrays included).
 #include "Policy_options_table.h"
+#include "Stopwatch.h"
 #include "policy_entries.h"
 
 #include <cgal_policies/Fast_threshold_simplifier.h>
-
-#include <chrono>
 
 namespace apps {
 namespace {
@@ -26,11 +25,11 @@ const Policy_options_table<Options>& fast_options() {
 Simplify_outcome run_fast(Mesh& mesh, const Simplify_settings& settings) {
   Options options = fast_options().read(settings.options);
   options.max_normal_angle_deg = settings.max_normal_angle_deg;
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   const cgal_policies::Fast_threshold_report report = cgal_policies::Fast_threshold_simplifier(
       options)(mesh, settings.target_faces, settings.on_progress);
   Simplify_outcome outcome;
-  outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  outcome.seconds = watch.seconds();
   outcome.stop_reason =
       report.target_reached ? Stop_reason::target_reached : Stop_reason::no_collapse_left;
   return outcome;

@@ -53,7 +53,8 @@ std::vector<Policy_entry> hausdorff_policies() {
       "refused above the tolerance; global mode bounds the two-sided distance to the input)",
       hausdorff_options().options(), run_hausdorff};
   hausdorff.own_bound = [](const Simplify_settings& settings) {
-    return settings.options.at("local") != 0 ? 0.0 : settings.options.at("tolerance");
+    const Options options = hausdorff_options().read(settings.options);
+    return options.reference == cgal_policies::Hausdorff_reference::local ? 0.0 : options.beta;
   };
   return {hausdorff};
 }

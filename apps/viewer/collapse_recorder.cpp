@@ -1,6 +1,6 @@
 #include "collapse_recorder.h"
+#include "common/Stopwatch.h"
 
-#include <chrono>
 #include <stdexcept>
 
 namespace apps {
@@ -11,11 +11,9 @@ Collapse_history record_collapses(const Mesh& input, const Policy_entry& policy,
   Mesh mesh = input;
   Collapse_history history;
   history.input_faces = mesh.number_of_faces();
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   settings.on_collapse = [&](Mesh::Vertex_index removed, Mesh::Vertex_index kept) {
-    history.collapses.push_back(
-        {removed, kept, mesh.point(kept),
-         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
+    history.collapses.push_back({removed, kept, mesh.point(kept), watch.seconds()});
   };
   history.outcome = policy.run(mesh, settings);
   history.final_faces = mesh.number_of_faces();
