@@ -8,7 +8,8 @@
 # Each target starts from its seeds (fuzz/corpus/<target>) and what earlier runs found
 # (out/fuzz/<target>/corpus); findings go to out/fuzz/<target>/ as crash-*, leak-*, timeout-* or
 # oom-* files. Prints a line per target (executions, coverage, corpus, findings); exits 1 when a
-# target found something, 2 on bad usage. FUZZ_SEED fixes libFuzzer's seed (CI sets it).
+# target found something, 2 on bad usage. FUZZ_SEED fixes libFuzzer's seed (CI sets it); FUZZ_JOBS,
+# how many targets run at once (default: the number of cores).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 hours=${1:-}
@@ -17,15 +18,19 @@ if ! [[ "$hours" =~ ^[0-9]*\.?[0-9]+$ ]]; then
   echo "usage: scripts/fuzz.sh HOURS [BUILD_DIR]   (HOURS: a positive number, e.g. 0.5)" >&2
   exit 2
 fi
-targets=(read_obj read_ply read_off read_stl repair command_line policies)
-for target in "${targets[@]}"; do
-  if [ ! -x "$build/bin/fuzz_$target" ]; then
-    echo "fuzz.sh: $build/bin/fuzz_$target is missing (see the comment at the top of this script)" >&2
-    exit 2
-  fi
-done
+# Every fuzz target the build has (fuzz/CMakeLists.txt names them fuzz_<target>).
+mapfile -t targets < <(find "$build/bin" -maxdepth 1 -name 'fuzz_*' -type f -executable \
+  -printf '%f\n' 2>/dev/null | sed 's/^fuzz_//' | sort)
+if [ ${#targets[@]} -eq 0 ]; then
+  echo "fuzz.sh: no fuzz target in $build/bin (see the comment at the top of this script)" >&2
+  exit 2
+fi
 seconds_each=$(awk -v h="$hours" -v n=${#targets[@]} 'BEGIN { s = int(h * 3600 / n); print s < 1 ? 1 : s }')
-jobs=$(nproc)
+jobs=${FUZZ_JOBS:-$(nproc)}
+if ! [[ "$jobs" =~ ^[1-9][0-9]*$ ]]; then
+  echo "fuzz.sh: FUZZ_JOBS must be a whole number of at least 1, not '$jobs'" >&2
+  exit 2
+fi
 
 dictionary() {
   case "$1" in

@@ -4,9 +4,15 @@
 #include "test_meshes.h"
 
 #include "common/App_error.h"
+#include "common/clean_triangle_soup.h"
 #include "common/mesh_io.h"
 #include "common/small_components.h"
 #include "common/soup_readers.h"
+
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair.h>
 
 #include <gtest/gtest.h>
 
@@ -716,6 +722,15 @@ std::string refusal(Parse parse, const std::string& bytes) {
   return "";
 }
 
+TEST(Readers, ObjCornersWithTexturesNormalsAndNegativeIndices) {
+  const Polygon_soup soup =
+      apps::parse_obj("f",
+                      "# a square\nmtllib a.mtl\nv 0 0 0\nv 1 0 0 1.0\nv +1 1 0e0 0.5 0.5 0.5\r\n"
+                      "vt 0 0\nvn 0 0 1\ng square\nusemtl red\nf 1/1/1 2/1/1 3//1\n"
+                      "v 0 1 0 # last\nl 1 2\nf -4 -2 -1\n");
+  expect_square(soup, {{0, 1, 2}, {0, 2, 3}});
+}
+
 TEST(Readers, OffSkipsCommentsColoursAndNormals) {
   const Polygon_soup soup =
       apps::parse_off("f",
@@ -785,6 +800,16 @@ TEST(Readers, MalformedFilesAreOneBadInputLine) {
   const auto ply = [](const std::string& source, const std::string& bytes) {
     return apps::parse_ply(source, bytes);
   };
+  const auto obj = [](const std::string& source, const std::string& bytes) {
+    return apps::parse_obj(source, bytes);
+  };
+  EXPECT_NE(refusal(obj, "v 0 0 0\nv 1 0 0\nv inf 1\nf 1 2 3\n"), "");  // two coordinates
+  EXPECT_NE(refusal(obj, "v 0 0 0\nv 1 0 0\nv 1,5 1 0\nf 1 2 3\n"), "");
+  EXPECT_NE(refusal(obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"), "");   // indices start at 1
+  EXPECT_NE(refusal(obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -4\n"), "");  // back too far
+  EXPECT_NE(refusal(obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x/1\n"), "");
+  EXPECT_NE(refusal(obj, "v 0 0 0\nv 1 0 0\nf 1 2\n"), "");  // two corners
+  EXPECT_EQ(refusal(obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), "");
   EXPECT_NE(refusal(off, "OFF\n4 1 0\n0 0 0\n"), "");                          // truncated
   EXPECT_NE(refusal(off, "OFF\n900000 1 0\n0 0 0\n"), "");                     // forged count
   EXPECT_NE(refusal(off, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 -2\n"), "");  // negative index
@@ -809,3 +834,114 @@ TEST(Readers, MalformedFilesAreOneBadInputLine) {
 }
 
 }  // namespace readers
+
+// The reader's fast path (apps/common/clean_triangle_soup.h): it takes exactly the soups CGAL's
+// check calls polygon meshes (when all are triangles), and builds the mesh CGAL's path builds.
+namespace clean_soups {
+
+using Polygons = std::vector<std::vector<std::size_t>>;
+using apps::Mesh;
+using apps::Point;
+
+const std::vector<Point> kPoints = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1},
+                                    {1, 1, 1}, {2, 0, 0}, {0, 2, 0}, {5, 5, 5}};
+
+bool builds(const Polygons& polygons, Mesh& mesh, std::size_t& unused) {
+  const bool built = apps::build_mesh_from_clean_triangles(kPoints, polygons, mesh, unused);
+  if (!built) {
+    EXPECT_TRUE(mesh.is_empty());
+  }
+  return built;
+}
+
+bool builds(const Polygons& polygons) {
+  Mesh mesh;
+  std::size_t unused = 0;
+  return builds(polygons, mesh, unused);
+}
+
+// halfedge by halfedge: the same target point, face, next and opposite.
+void expect_same_connectivity(const Mesh& a, const Mesh& b) {
+  ASSERT_EQ(a.number_of_vertices(), b.number_of_vertices());
+  ASSERT_EQ(a.number_of_halfedges(), b.number_of_halfedges());
+  ASSERT_EQ(a.number_of_faces(), b.number_of_faces());
+  std::size_t differences = 0;
+  for (auto h : a.halfedges())
+    differences += a.point(a.target(h)) != b.point(b.target(h)) || a.face(h) != b.face(h) ||
+                   a.next(h) != b.next(h) || a.opposite(h) != b.opposite(h);
+  EXPECT_EQ(differences, 0u);
+}
+
+Mesh built_by_cgal(const std::vector<Point>& points, const Polygons& polygons) {
+  Mesh mesh;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  CGAL::Polygon_mesh_processing::remove_isolated_vertices(mesh);
+  mesh.collect_garbage();
+  return mesh;
+}
+
+TEST(CleanSoups, AClosedAndAnOpenMeshAreBuiltAsCgalBuildsThem) {
+  const Polygons tetrahedron = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+  const Polygons fan_with_unused_points = {{0, 1, 2}, {0, 2, 6}, {5, 1, 0}};  // 3, 4, 7 unused
+  for (const Polygons& polygons : {tetrahedron, fan_with_unused_points}) {
+    Mesh mesh;
+    std::size_t unused = 0;
+    ASSERT_TRUE(builds(polygons, mesh, unused));
+    EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+    EXPECT_TRUE(mesh.is_valid(false));
+    expect_same_connectivity(mesh, built_by_cgal(kPoints, polygons));
+    for (auto v : mesh.vertices())
+      EXPECT_EQ(CGAL::is_border(v, mesh).has_value(), mesh.is_border(mesh.halfedge(v)));
+  }
+  Mesh fan;
+  std::size_t unused = 0;
+  ASSERT_TRUE(builds(fan_with_unused_points, fan, unused));
+  EXPECT_EQ(unused, 3u);
+  EXPECT_EQ(fan.number_of_vertices(), 5u);
+  EXPECT_EQ(test_meshes::border_edge_count(fan), 5u);
+}
+
+TEST(CleanSoups, SoupsThatNeedRepairAreLeftToCgal) {
+  EXPECT_FALSE(builds({{0, 1, 2, 3}}));                     // not a triangle
+  EXPECT_FALSE(builds({{0, 1, 1}}));                        // a corner twice
+  EXPECT_FALSE(builds({{0, 1, 2}, {0, 1, 2}}));             // a face twice
+  EXPECT_FALSE(builds({{0, 1, 2}, {1, 0, 3}, {0, 1, 4}}));  // an edge of three faces
+  EXPECT_FALSE(builds({{0, 1, 2}, {0, 1, 3}}));             // faces facing apart
+  EXPECT_FALSE(builds({{0, 1, 2}, {0, 5, 6}}));             // a bowtie
+  EXPECT_FALSE(builds({{0, 2, 1},
+                       {0, 1, 3},
+                       {1, 2, 3},
+                       {0, 3, 2},  // two tetrahedra that
+                       {0, 5, 6},
+                       {0, 7, 5},
+                       {5, 7, 6},
+                       {0, 6, 7}}));  // share a point
+}
+
+// Every shipped mesh the fast path takes is built as CGAL builds it; the others are left whole.
+TEST(CleanSoups, ShippedMeshesAreBuiltAsCgalBuildsThem) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  std::size_t taken = 0;
+  for (const std::string name :
+       {"alligator.obj", "bob_tri.obj", "bunny.obj", "cow.obj", "dragon.ply", "dragon_res2.ply",
+        "fandisk.obj", "nefertiti.obj", "rocker-arm.obj", "spot.obj", "teapot.obj", "woody.obj"}) {
+    SCOPED_TRACE(name);
+    std::vector<Point> points;
+    Polygons polygons;
+    ASSERT_TRUE(CGAL::IO::read_polygon_soup(test_meshes::data_file(name), points, polygons));
+    const bool all_triangles =
+        std::all_of(polygons.begin(), polygons.end(), [](const auto& p) { return p.size() == 3; });
+    const bool cgal_takes =
+        all_triangles && CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons);
+    Mesh mesh;
+    std::size_t unused = 0;
+    ASSERT_EQ(apps::build_mesh_from_clean_triangles(points, polygons, mesh, unused), cgal_takes);
+    if (!cgal_takes) continue;
+    ++taken;
+    EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+    expect_same_connectivity(mesh, built_by_cgal(points, polygons));
+  }
+  EXPECT_GE(taken, 6u);
+}
+
+}  // namespace clean_soups

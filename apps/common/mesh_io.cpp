@@ -2,6 +2,7 @@
 
 #include "App_error.h"
 #include "atomic_write.h"
+#include "clean_triangle_soup.h"
 #include "declared_counts.h"
 #include "soup_readers.h"
 
@@ -19,6 +20,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -61,6 +63,9 @@ std::string file_bytes(const std::string& path) {
   std::FILE* file = std::fopen(path.c_str(), "rb");
   if (!file) fail_input(path, std::string("cannot open: ") + std::strerror(errno));
   std::string bytes;
+  std::error_code size_unknown;
+  const std::uintmax_t size = fs::file_size(path, size_unknown);
+  if (!size_unknown) bytes.reserve(std::size_t(size));
   char buffer[1 << 16];
   std::size_t got = 0;
   while ((got = std::fread(buffer, 1, sizeof buffer, file)) > 0) bytes.append(buffer, got);
@@ -106,6 +111,46 @@ void repair_soup(std::vector<Point>& points, std::vector<Polygon>& polygons,
     repairs.push_back("oriented the faces consistently");
 }
 
+std::string unused_vertices_removed(std::size_t count) {
+  return "removed " + std::to_string(count) + " unused vertices";
+}
+
+// The general path, for soups that are not a clean triangle mesh as they stand: CGAL's soup
+// repair when the soup is not a polygon mesh, then stitching and triangulation.
+Mesh repaired_triangle_mesh(const std::string& path, std::vector<Point>& points,
+                            std::vector<Polygon>& polygons, std::vector<std::string>& repairs) {
+  if (!PMP::is_polygon_soup_a_polygon_mesh(polygons)) repair_soup(points, polygons, repairs);
+  if (polygons.empty()) fail_input(path, "no faces left after dropping degenerate ones");
+
+  Mesh mesh;
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  // Orienting cuts the soup wherever it is not manifold, more than it must; stitching puts back
+  // together the border edges that can be joined without breaking manifoldness.
+  if (!repairs.empty()) {
+    if (const std::size_t stitched = PMP::stitch_borders(mesh))
+      repairs.push_back("stitched " + std::to_string(stitched) +
+                        " border edge pairs back together");
+  }
+  const std::size_t isolated = PMP::remove_isolated_vertices(mesh);
+  if (isolated > 0) repairs.push_back(unused_vertices_removed(isolated));
+  if (!CGAL::is_triangle_mesh(mesh)) {
+    std::size_t polygons_split = 0;
+    for (auto f : faces(mesh)) polygons_split += CGAL::degree(f, mesh) > 3;
+    // A polygon that crosses itself in its plane trips an assertion of CGAL's constrained
+    // triangulation (fuzz/regressions/repair); with assertions on, that is an exception.
+    bool triangulated = false;
+    try {
+      triangulated = PMP::triangulate_faces(mesh);
+    } catch (const CGAL::Failure_exception&) {
+    }
+    if (!triangulated) fail_input(path, "a polygon could not be triangulated (it crosses itself?)");
+    repairs.push_back("triangulated " + std::to_string(polygons_split) + " polygons");
+  }
+  mesh.collect_garbage();
+  if (!CGAL::is_valid_polygon_mesh(mesh)) fail_input(path, "not a valid polygon mesh");
+  return mesh;
+}
+
 }  // namespace
 
 bool has_supported_mesh_extension(const std::string& path) {
@@ -119,9 +164,11 @@ Mesh read_triangle_mesh(const std::string& path, Read_report* report) {
   check_readable_file(path);
   check_declared_counts(path);
   const std::string extension = lower_extension(path);
-  if (extension == ".off" || extension == ".ply") {
+  if (extension != ".stl") {
     const std::string bytes = file_bytes(path);
-    Polygon_soup soup = extension == ".off" ? parse_off(path, bytes) : parse_ply(path, bytes);
+    Polygon_soup soup = extension == ".obj"   ? parse_obj(path, bytes)
+                        : extension == ".off" ? parse_off(path, bytes)
+                                              : parse_ply(path, bytes);
     return triangle_mesh_from_soup(path, soup.points, soup.polygons, report);
   }
   std::vector<Point> points;
@@ -140,37 +187,14 @@ Mesh read_triangle_mesh(const std::string& path, Read_report* report) {
 Mesh triangle_mesh_from_soup(const std::string& path, std::vector<Point>& points,
                              std::vector<Polygon>& polygons, Read_report* report) {
   check_soup(path, points, polygons);
-
-  std::vector<std::string> repairs;
-  if (!PMP::is_polygon_soup_a_polygon_mesh(polygons)) repair_soup(points, polygons, repairs);
-  if (polygons.empty()) fail_input(path, "no faces left after dropping degenerate ones");
-
   Mesh mesh;
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-  // Orienting cuts the soup wherever it is not manifold, more than it must; stitching puts back
-  // together the border edges that can be joined without breaking manifoldness.
-  if (!repairs.empty()) {
-    if (const std::size_t stitched = PMP::stitch_borders(mesh))
-      repairs.push_back("stitched " + std::to_string(stitched) +
-                        " border edge pairs back together");
+  std::size_t unused_points = 0;
+  std::vector<std::string> repairs;
+  if (build_mesh_from_clean_triangles(points, polygons, mesh, unused_points)) {
+    if (unused_points > 0) repairs.push_back(unused_vertices_removed(unused_points));
+  } else {
+    mesh = repaired_triangle_mesh(path, points, polygons, repairs);
   }
-  const std::size_t isolated = PMP::remove_isolated_vertices(mesh);
-  if (isolated > 0) repairs.push_back("removed " + std::to_string(isolated) + " unused vertices");
-  if (!CGAL::is_triangle_mesh(mesh)) {
-    std::size_t polygons_split = 0;
-    for (auto f : faces(mesh)) polygons_split += CGAL::degree(f, mesh) > 3;
-    // A polygon that crosses itself in its plane trips an assertion of CGAL's constrained
-    // triangulation (fuzz/regressions/repair); with assertions on, that is an exception.
-    bool triangulated = false;
-    try {
-      triangulated = PMP::triangulate_faces(mesh);
-    } catch (const CGAL::Failure_exception&) {
-    }
-    if (!triangulated) fail_input(path, "a polygon could not be triangulated (it crosses itself?)");
-    repairs.push_back("triangulated " + std::to_string(polygons_split) + " polygons");
-  }
-  mesh.collect_garbage();
-  if (!CGAL::is_valid_polygon_mesh(mesh)) fail_input(path, "not a valid polygon mesh");
   if (report) report->repairs = repairs;
   return mesh;
 }

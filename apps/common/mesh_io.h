@@ -1,4 +1,4 @@
-// Reading and writing meshes for every app: any format CGAL reads, polygon soups repaired,
+// Reading and writing meshes for every app: OBJ, OFF, PLY and STL, polygon soups repaired,
 // polygons triangulated, and atomic writes that never leave a partial file or touch the input.
 #ifndef CGAL_POLICIES_APPS_MESH_IO_H
 #define CGAL_POLICIES_APPS_MESH_IO_H
@@ -20,8 +20,9 @@ bool has_supported_mesh_extension(const std::string& path);
 // Reads a triangle mesh; throws App_error(exit_bad_input, "<path>: <cause>") when it cannot.
 Mesh read_triangle_mesh(const std::string& path, Read_report* report = nullptr);
 
-// The reader's second half: checks the soup (faces, finite points, indices in range), repairs it
-// when it is not a polygon mesh as it stands, and triangulates. Errors name `source`, as above.
+// The reader's second half: checks the soup (faces, finite points, indices in range); builds the
+// mesh directly when the soup is a clean triangle mesh, otherwise repairs it when it is not a
+// polygon mesh as it stands, and triangulates. Errors name `source`, as above.
 Mesh triangle_mesh_from_soup(const std::string& source, std::vector<Point>& points,
                              std::vector<std::vector<std::size_t>>& polygons,
                              Read_report* report = nullptr);

@@ -18,19 +18,12 @@ namespace {
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f'; }
 
-// A number of text; from_chars takes no leading '+', which files do write.
-std::optional<double> to_double(std::string_view token) {
+// A number of text, or nothing unless the whole token is one; from_chars takes no leading '+',
+// which files do write. As a size_t it is a count or an index: whole and at least 0.
+template <typename Number>
+std::optional<Number> number_of(std::string_view token) {
   if (!token.empty() && token[0] == '+') token.remove_prefix(1);
-  double value = 0;
-  const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-  if (error != std::errc() || end != token.data() + token.size()) return std::nullopt;
-  return value;
-}
-
-// A count or an index: a whole number of at least 0 that a size_t holds.
-std::optional<std::size_t> to_count(std::string_view token) {
-  if (!token.empty() && token[0] == '+') token.remove_prefix(1);
-  std::size_t value = 0;
+  Number value = 0;
   const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
   if (error != std::errc() || end != token.data() + token.size()) return std::nullopt;
   return value;
@@ -104,8 +97,8 @@ Polygon_soup parse_off(const std::string& source, std::string_view bytes) {
     vertices_token = counts.next();
   }
   if (vertices_token == "BINARY") fail(source, "binary OFF is not read (write it as text)");
-  const std::optional<std::size_t> vertices = to_count(vertices_token);
-  const std::optional<std::size_t> faces = to_count(counts.next());
+  const std::optional<std::size_t> vertices = number_of<std::size_t>(vertices_token);
+  const std::optional<std::size_t> faces = number_of<std::size_t>(counts.next());
   if (!vertices || !faces) fail(source, "the vertex and face counts are not whole numbers");
   // Each vertex and face takes at least two bytes: a larger count is a forged or cut header.
   if (*vertices > bytes.size() / 2 || *faces > bytes.size() / 2)
@@ -121,7 +114,7 @@ Polygon_soup parse_off(const std::string& source, std::string_view bytes) {
     Tokens tokens(*line);
     double xyz[3];
     for (double& c : xyz) {
-      const std::optional<double> value = to_double(tokens.next());
+      const std::optional<double> value = number_of<double>(tokens.next());
       if (!value) fail(source, "vertex " + std::to_string(i) + ": x y z are not three numbers");
       c = *value;
     }
@@ -132,12 +125,12 @@ Polygon_soup parse_off(const std::string& source, std::string_view bytes) {
     const std::optional<std::string_view> line = lines.next();
     if (!line) fail(source, "truncated: face " + std::to_string(f) + " is missing");
     Tokens tokens(*line);
-    const std::optional<std::size_t> corners = to_count(tokens.next());
+    const std::optional<std::size_t> corners = number_of<std::size_t>(tokens.next());
     if (!corners || *corners < 3 || *corners > line->size())
       fail(source, "face " + std::to_string(f) + ": the corner count is not a number of 3 or more");
     std::vector<std::size_t> polygon(*corners);
     for (std::size_t& index : polygon) {
-      const std::optional<std::size_t> value = to_count(tokens.next());
+      const std::optional<std::size_t> value = number_of<std::size_t>(tokens.next());
       if (!value) fail(source, "face " + std::to_string(f) + ": a corner is not a vertex index");
       index = *value;
     }
@@ -148,45 +141,97 @@ Polygon_soup parse_off(const std::string& source, std::string_view bytes) {
 
 namespace {
 
-// --- PLY ---
+// --- OBJ ---
 
-enum class Ply_type { int8, uint8, int16, uint16, int32, uint32, float32, float64 };
-
-std::optional<Ply_type> ply_type(std::string_view name) {
-  static const std::pair<const char*, Ply_type> kNames[] = {
-      {"char", Ply_type::int8},      {"int8", Ply_type::int8},       {"uchar", Ply_type::uint8},
-      {"uint8", Ply_type::uint8},    {"short", Ply_type::int16},     {"int16", Ply_type::int16},
-      {"ushort", Ply_type::uint16},  {"uint16", Ply_type::uint16},   {"int", Ply_type::int32},
-      {"int32", Ply_type::int32},    {"uint", Ply_type::uint32},     {"uint32", Ply_type::uint32},
-      {"float", Ply_type::float32},  {"float32", Ply_type::float32}, {"double", Ply_type::float64},
-      {"float64", Ply_type::float64}};
-  for (const auto& [text, type] : kNames)
-    if (name == text) return type;
-  return std::nullopt;
+// A corner of an OBJ face, "v", "v/vt", "v//vn" or "v/vt/vn": its point, counted from 1, or back
+// from the last point read when negative. Nothing when it is not such an index or is 0.
+std::optional<std::size_t> obj_corner(std::string_view token, std::size_t points_so_far) {
+  const std::optional<long long> index = number_of<long long>(token.substr(0, token.find('/')));
+  if (!index || *index == 0) return std::nullopt;
+  if (*index > 0) return std::size_t(*index - 1);
+  const auto back = std::size_t(-(*index + 1)) + 1;  // no overflow at the lowest long long
+  if (back > points_so_far) return std::nullopt;
+  return points_so_far - back;
 }
 
-std::size_t size_of(Ply_type type) {
-  switch (type) {
-    case Ply_type::int8:
-    case Ply_type::uint8:
-      return 1;
-    case Ply_type::int16:
-    case Ply_type::uint16:
-      return 2;
-    case Ply_type::int32:
-    case Ply_type::uint32:
-    case Ply_type::float32:
-      return 4;
-    case Ply_type::float64:
-      return 8;
+}  // namespace
+
+Polygon_soup parse_obj(const std::string& source, std::string_view bytes) {
+  Polygon_soup soup;
+  std::size_t at = 0;
+  for (std::size_t line_number = 1; at < bytes.size(); ++line_number) {
+    std::size_t end = bytes.find('\n', at);
+    if (end == std::string_view::npos) end = bytes.size();
+    std::string_view line = bytes.substr(at, end - at);
+    at = end + 1;
+    Tokens tokens(line.substr(0, line.find('#')));
+    const std::string_view keyword = tokens.next();
+    const auto where = [&] { return "line " + std::to_string(line_number) + ": "; };
+    if (keyword == "v") {
+      double xyz[3];
+      for (double& c : xyz) {
+        const std::optional<double> value = number_of<double>(tokens.next());
+        if (!value) fail(source, where() + "a vertex needs three numbers, x y z");
+        c = *value;
+      }
+      soup.points.emplace_back(xyz[0], xyz[1], xyz[2]);  // w or a colour after them is skipped
+    } else if (keyword == "f") {
+      std::vector<std::size_t> polygon;
+      for (std::string_view corner = tokens.next(); !corner.empty(); corner = tokens.next()) {
+        const std::optional<std::size_t> index = obj_corner(corner, soup.points.size());
+        if (!index)
+          fail(source, where() + "'" + std::string(corner.substr(0, 20)) +
+                           "' is not a vertex index (1 and up, or negative to count back)");
+        polygon.push_back(*index);
+      }
+      if (polygon.size() < 3) fail(source, where() + "a face needs at least three corners");
+      soup.polygons.push_back(std::move(polygon));
+    }
+    // Texture coordinates, normals, groups, materials, lines and the rest are not geometry.
   }
-  return 8;
+  return soup;
+}
+
+namespace {
+
+// --- PLY ---
+
+template <typename T>
+double decode_as(const unsigned char* raw) {
+  T value;
+  std::memcpy(&value, raw, sizeof(T));
+  return double(value);
+}
+
+// A scalar type of PLY: its two names in headers, its size in a binary body, and its decoder
+// (from the file's bytes in the machine's order); doubles hold every value of each exactly.
+struct Ply_type {
+  const char* name;
+  const char* sized_name;
+  std::size_t size;
+  double (*decode)(const unsigned char*);
+};
+
+const Ply_type kPlyTypes[] = {{"char", "int8", 1, decode_as<std::int8_t>},
+                              {"uchar", "uint8", 1, decode_as<std::uint8_t>},
+                              {"short", "int16", 2, decode_as<std::int16_t>},
+                              {"ushort", "uint16", 2, decode_as<std::uint16_t>},
+                              {"int", "int32", 4, decode_as<std::int32_t>},
+                              {"uint", "uint32", 4, decode_as<std::uint32_t>},
+                              {"float", "float32", 4, decode_as<float>},
+                              {"double", "float64", 8, decode_as<double>}};
+
+// The type of that name; nullptr for none.
+const Ply_type* ply_type(std::string_view name) {
+  for (const Ply_type& type : kPlyTypes)
+    if (name == type.name || name == type.sized_name) return &type;
+  return nullptr;
 }
 
 struct Ply_property {
   std::string name;
-  Ply_type type = Ply_type::float32;
-  std::optional<Ply_type> count_type;  // set for a list, whose items are of `type`
+  const Ply_type* type = nullptr;
+  const Ply_type* count_type = nullptr;  // set for a list, whose items are of `type`
 };
 
 struct Ply_element {
@@ -232,7 +277,7 @@ Ply_header parse_ply_header(const std::string& source, std::string_view bytes) {
     } else if (keyword == "element") {
       Ply_element element;
       element.name = tokens.next();
-      const std::optional<std::size_t> count = to_count(tokens.next());
+      const std::optional<std::size_t> count = number_of<std::size_t>(tokens.next());
       if (element.name.empty() || !count) fail(source, where + "expected 'element NAME COUNT'");
       // Each element takes at least one byte of the body.
       if (*count > bytes.size()) fail(source, where + "declares more elements than the file holds");
@@ -247,10 +292,10 @@ Ply_header parse_ply_header(const std::string& source, std::string_view bytes) {
         if (!property.count_type) fail(source, where + "unknown list count type");
         type = tokens.next();
       }
-      const std::optional<Ply_type> item = ply_type(type);
+      property.type = ply_type(type);
       property.name = tokens.next();
-      if (!item || property.name.empty()) fail(source, where + "expected 'property TYPE NAME'");
-      property.type = *item;
+      if (!property.type || property.name.empty())
+        fail(source, where + "expected 'property TYPE NAME'");
       header.elements.back().properties.push_back(std::move(property));
     } else {
       fail(source, where + "unknown keyword '" + std::string(keyword.substr(0, 30)) + "'");
@@ -268,56 +313,27 @@ class Ply_values {
   Ply_values(const std::string& source, std::string_view body, Ply_format format)
       : m_source(source), m_body(body), m_format(format), m_tokens(body) {}
 
-  double next(Ply_type type) {
+  double next(const Ply_type& type) {
     if (m_format == Ply_format::ascii) {
       const std::string_view token = m_tokens.next();
       if (token.empty()) fail(m_source, "truncated: the data ends before the header's elements");
-      const std::optional<double> value = to_double(token);
+      const std::optional<double> value = number_of<double>(token);
       if (!value) fail(m_source, "'" + std::string(token.substr(0, 30)) + "' is not a number");
       return *value;
     }
-    const std::size_t size = size_of(type);
-    if (m_body.size() - m_at < size)
+    if (m_body.size() - m_at < type.size)
       fail(m_source, "truncated: the data ends before the header's elements");
     unsigned char raw[8];
-    std::memcpy(raw, m_body.data() + m_at, size);
-    m_at += size;
-    if (m_format == Ply_format::big_endian) std::reverse(raw, raw + size);
-    return decode(raw, type);
+    std::memcpy(raw, m_body.data() + m_at, type.size);
+    m_at += type.size;
+    if (m_format == Ply_format::big_endian) std::reverse(raw, raw + type.size);
+    return type.decode(raw);
   }
 
   // An upper bound of the values left: a list longer than that is a forged count.
   std::size_t values_left() const { return m_body.size() - m_at; }
 
  private:
-  template <typename T>
-  static double as(const unsigned char* raw) {
-    T value;
-    std::memcpy(&value, raw, sizeof(T));
-    return double(value);
-  }
-  static double decode(const unsigned char* raw, Ply_type type) {
-    switch (type) {
-      case Ply_type::int8:
-        return as<std::int8_t>(raw);
-      case Ply_type::uint8:
-        return as<std::uint8_t>(raw);
-      case Ply_type::int16:
-        return as<std::int16_t>(raw);
-      case Ply_type::uint16:
-        return as<std::uint16_t>(raw);
-      case Ply_type::int32:
-        return as<std::int32_t>(raw);
-      case Ply_type::uint32:
-        return as<std::uint32_t>(raw);
-      case Ply_type::float32:
-        return as<float>(raw);
-      case Ply_type::float64:
-        return as<double>(raw);
-    }
-    return 0;
-  }
-
   const std::string& m_source;
   std::string_view m_body;
   Ply_format m_format;
@@ -377,7 +393,7 @@ Polygon_soup parse_ply(const std::string& source, std::string_view bytes) {
       for (std::size_t p = 0; p < element.properties.size(); ++p) {
         const Ply_property& property = element.properties[p];
         if (!property.count_type) {
-          const double value = values.next(property.type);
+          const double value = values.next(*property.type);
           for (int axis = 0; axis < 3; ++axis)
             if (xyz_slot[axis] == int(p)) xyz[axis] = value;
           continue;
@@ -387,7 +403,7 @@ Polygon_soup parse_ply(const std::string& source, std::string_view bytes) {
           fail(source, element.name + " " + std::to_string(row) + ": a list count of " +
                            std::to_string(count) + " does not fit in the file");
         list.resize(std::size_t(count));
-        for (double& item : list) item = values.next(property.type);
+        for (double& item : list) item = values.next(*property.type);
         if (!((is_face || is_strip) && is_index_list(property))) continue;
         for (const double index : list)
           if (!(index == std::floor(index) && index < 1e18 &&

@@ -1,7 +1,10 @@
-// The OFF and PLY readers of the apps: strict parsers of the whole file in memory, without
+// The OBJ, OFF and PLY readers of the apps: strict parsers of the whole file in memory, without
 // iostreams, that give a polygon soup or one error line. CGAL 5.5's own OFF and PLY readers have
 // undefined behaviour on some malformed files (fuzz/regressions/read_off, read_ply), and Debian
-// packages no PLY or OFF library short of assimp's whole-scene importer.
+// packages no PLY or OFF library short of assimp's whole-scene importer. Debian's tinyobjloader
+// reads a coordinate it cannot parse ("inf") as 0 and keeps faces whose indices are out of
+// range, with a warning; CGAL's OBJ reader parses through iostreams, which made most of the
+// reading time of a large file.
 #ifndef CGAL_POLICIES_APPS_SOUP_READERS_H
 #define CGAL_POLICIES_APPS_SOUP_READERS_H
 
@@ -18,6 +21,11 @@ struct Polygon_soup {
   std::vector<Point> points;
   std::vector<std::vector<std::size_t>> polygons;
 };
+
+// OBJ: points from "v" lines (x y z; a w or colour after them is skipped) and polygons from "f"
+// lines, whose corners may carry /vt and /vn (skipped) and count back from the last point when
+// negative. Other lines are skipped. Throws App_error(exit_bad_input, "<source>: line N: <cause>").
+Polygon_soup parse_obj(const std::string& source, std::string_view bytes);
 
 // OFF with an optional ST, C or N prefix (texture coordinates, colours and normals are skipped)
 // and # comments. Throws App_error(exit_bad_input, "<source>: <cause>").
