@@ -46,7 +46,8 @@ class Tokens {
   std::size_t m_at = 0;
 };
 
-// The lines of a text one by one, with OFF's # comments cut off; lines left blank are skipped.
+// The lines of a text one by one, with OFF's and OBJ's # comments cut off; lines left blank are
+// skipped.
 class Content_lines {
  public:
   explicit Content_lines(std::string_view text) : m_text(text) {}
@@ -56,16 +57,30 @@ class Content_lines {
       if (end == std::string_view::npos) end = m_text.size();
       std::string_view line = m_text.substr(m_at, end - m_at);
       m_at = end + 1;
+      ++m_number;
       line = line.substr(0, line.find('#'));
       if (std::any_of(line.begin(), line.end(), [](char c) { return !is_blank(c); })) return line;
     }
     return std::nullopt;
   }
+  // The number of the line `next` gave last, from 1.
+  std::size_t number() const { return m_number; }
 
  private:
   std::string_view m_text;
-  std::size_t m_at = 0;
+  std::size_t m_at = 0, m_number = 0;
 };
+
+// The next three tokens as x y z; nothing unless all three are numbers.
+std::optional<Point> next_point(Tokens& tokens) {
+  double xyz[3];
+  for (double& c : xyz) {
+    const std::optional<double> value = number_of<double>(tokens.next());
+    if (!value) return std::nullopt;
+    c = *value;
+  }
+  return Point(xyz[0], xyz[1], xyz[2]);
+}
 
 // --- OFF ---
 
@@ -112,13 +127,9 @@ Polygon_soup parse_off(const std::string& source, std::string_view bytes) {
     const std::optional<std::string_view> line = lines.next();
     if (!line) fail(source, "truncated: vertex " + std::to_string(i) + " is missing");
     Tokens tokens(*line);
-    double xyz[3];
-    for (double& c : xyz) {
-      const std::optional<double> value = number_of<double>(tokens.next());
-      if (!value) fail(source, "vertex " + std::to_string(i) + ": x y z are not three numbers");
-      c = *value;
-    }
-    soup.points.emplace_back(xyz[0], xyz[1], xyz[2]);  // what follows (normal, colour) is skipped
+    const std::optional<Point> point = next_point(tokens);
+    if (!point) fail(source, "vertex " + std::to_string(i) + ": x y z are not three numbers");
+    soup.points.push_back(*point);  // what follows (normal, colour) is skipped
   }
   soup.polygons.reserve(*faces);
   for (std::size_t f = 0; f < *faces; ++f) {
@@ -158,23 +169,15 @@ std::optional<std::size_t> obj_corner(std::string_view token, std::size_t points
 
 Polygon_soup parse_obj(const std::string& source, std::string_view bytes) {
   Polygon_soup soup;
-  std::size_t at = 0;
-  for (std::size_t line_number = 1; at < bytes.size(); ++line_number) {
-    std::size_t end = bytes.find('\n', at);
-    if (end == std::string_view::npos) end = bytes.size();
-    std::string_view line = bytes.substr(at, end - at);
-    at = end + 1;
-    Tokens tokens(line.substr(0, line.find('#')));
+  Content_lines lines(bytes);
+  for (std::optional<std::string_view> line = lines.next(); line; line = lines.next()) {
+    Tokens tokens(*line);
     const std::string_view keyword = tokens.next();
-    const auto where = [&] { return "line " + std::to_string(line_number) + ": "; };
+    const auto where = [&] { return "line " + std::to_string(lines.number()) + ": "; };
     if (keyword == "v") {
-      double xyz[3];
-      for (double& c : xyz) {
-        const std::optional<double> value = number_of<double>(tokens.next());
-        if (!value) fail(source, where() + "a vertex needs three numbers, x y z");
-        c = *value;
-      }
-      soup.points.emplace_back(xyz[0], xyz[1], xyz[2]);  // w or a colour after them is skipped
+      const std::optional<Point> point = next_point(tokens);
+      if (!point) fail(source, where() + "a vertex needs three numbers, x y z");
+      soup.points.push_back(*point);  // w or a colour after them is skipped
     } else if (keyword == "f") {
       std::vector<std::size_t> polygon;
       for (std::string_view corner = tokens.next(); !corner.empty(); corner = tokens.next()) {
