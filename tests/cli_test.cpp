@@ -6,6 +6,7 @@
 #include "common/App_error.h"
 #include "common/clean_triangle_soup.h"
 #include "common/mesh_io.h"
+#include "common/polygon_crossing.h"
 #include "common/small_components.h"
 #include "common/soup_readers.h"
 
@@ -945,3 +946,68 @@ TEST(CleanSoups, ShippedMeshesAreBuiltAsCgalBuildsThem) {
 }
 
 }  // namespace clean_soups
+
+// ---------------------------------------------------------------------------------------------
+// Polygons that cross themselves are refused before CGAL's triangulation sees them.
+namespace polygon_crossing {
+
+using apps::Point;
+
+std::vector<Point> in_plane(const std::vector<std::array<double, 2>>& xy) {
+  std::vector<Point> corners;
+  for (const auto& p : xy) corners.emplace_back(p[0], p[1], 0.0);
+  return corners;
+}
+
+bool crosses(const std::vector<std::array<double, 2>>& xy) {
+  return apps::polygon_crosses_itself(in_plane(xy), apps::Kernel::Vector_3(0, 0, 1));
+}
+
+TEST(PolygonCrossing, SimplePolygonsPass) {
+  EXPECT_FALSE(crosses({{0, 0}, {2, 0}, {3, 1}, {1, 2}, {-1, 1}}));         // convex pentagon
+  EXPECT_FALSE(crosses({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}));  // an L
+  EXPECT_FALSE(crosses({{0, 0}, {1, 0}, {2, 0}, {2, 2}, {0, 2}}));          // a corner mid-edge
+  EXPECT_FALSE(crosses({{0, 0}, {2, 0}, {2, 2}, {0, 2}, {1, 1}}));          // a notch to the centre
+}
+
+TEST(PolygonCrossing, CrossingsTouchesAndFoldsAreFound) {
+  EXPECT_TRUE(crosses({{0, 0}, {2, 0}, {0, 2}, {2, 2}}));                    // a bowtie
+  EXPECT_TRUE(crosses({{0, 2}, {2, -1}, {-1, 1}, {1, 1}, {-2, -1}}));        // a pentagram
+  EXPECT_TRUE(crosses({{0, 0}, {4, 0}, {4, 2}, {2, 0}, {0, 2}}));            // a corner on an edge
+  EXPECT_TRUE(crosses({{0, 0}, {2, 0}, {1, 0}, {1, 1}}));                    // folds back
+  EXPECT_TRUE(crosses({{0, 0}, {2, 0}, {2, 2}, {0, 0}, {-2, 2}, {-2, 0}}));  // a corner twice
+}
+
+TEST(PolygonCrossing, IsJudgedAlongTheNormal) {
+  // A pentagon whose corners alternate between two heights: simple seen from above, its edges
+  // cross seen from the side.
+  std::vector<Point> corners = in_plane({{0, 0}, {2, 0}, {3, 1}, {1, 2}, {-1, 1}});
+  for (std::size_t i = 0; i < corners.size(); ++i)
+    corners[i] = Point(corners[i].x(), corners[i].y(), 0.1 * double(i % 2));
+  EXPECT_FALSE(apps::polygon_crosses_itself(corners, apps::Kernel::Vector_3(0, 0, 1)));
+  EXPECT_TRUE(apps::polygon_crosses_itself(corners, apps::Kernel::Vector_3(0, 1, 0)));
+}
+
+// The cause the reader gives for the soup, "" when it reads it.
+std::string refusal(const std::vector<std::array<double, 2>>& xy) {
+  std::vector<Point> points = in_plane(xy);
+  std::vector<std::vector<std::size_t>> polygons(1);
+  for (std::size_t i = 0; i < points.size(); ++i) polygons[0].push_back(i);
+  try {
+    const apps::Mesh mesh = apps::triangle_mesh_from_soup("soup", points, polygons);
+    EXPECT_EQ(mesh.number_of_faces(), points.size() - 2);
+  } catch (const apps::App_error& e) {
+    EXPECT_EQ(e.code(), apps::exit_bad_input);
+    return e.what();
+  }
+  return "";
+}
+
+TEST(PolygonCrossing, TheReaderRefusesACrossingPolygonAndTriangulatesASimpleOne) {
+  EXPECT_EQ(refusal({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}), "");
+  EXPECT_EQ(refusal({{0, 2}, {2, -1}, {-1, 1}, {1, 1}, {-2, -1}}),
+            "soup: polygon 0 crosses itself");
+  EXPECT_EQ(refusal({{0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}}), "soup: polygon 0 has no area");
+}
+
+}  // namespace polygon_crossing

@@ -4,9 +4,11 @@
 #include "atomic_write.h"
 #include "clean_triangle_soup.h"
 #include "declared_counts.h"
+#include "polygon_crossing.h"
 #include "soup_readers.h"
 
 #include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair.h>
@@ -111,6 +113,13 @@ void repair_soup(std::vector<Point>& points, std::vector<Polygon>& polygons,
     repairs.push_back("oriented the faces consistently");
 }
 
+std::vector<Point> face_corners(Mesh::Face_index f, const Mesh& mesh) {
+  std::vector<Point> corners;
+  for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+    corners.push_back(mesh.point(v));
+  return corners;
+}
+
 std::string unused_vertices_removed(std::size_t count) {
   return "removed " + std::to_string(count) + " unused vertices";
 }
@@ -135,15 +144,16 @@ Mesh repaired_triangle_mesh(const std::string& path, std::vector<Point>& points,
   if (isolated > 0) repairs.push_back(unused_vertices_removed(isolated));
   if (!CGAL::is_triangle_mesh(mesh)) {
     std::size_t polygons_split = 0;
-    for (auto f : faces(mesh)) polygons_split += CGAL::degree(f, mesh) > 3;
-    // A polygon that crosses itself in its plane trips an assertion of CGAL's constrained
-    // triangulation (fuzz/regressions/repair); with assertions on, that is an exception.
-    bool triangulated = false;
-    try {
-      triangulated = PMP::triangulate_faces(mesh);
-    } catch (const CGAL::Failure_exception&) {
+    for (auto f : faces(mesh)) {
+      if (CGAL::degree(f, mesh) == 3) continue;
+      ++polygons_split;
+      const std::string polygon = "polygon " + std::to_string(std::size_t(f));
+      const Kernel::Vector_3 normal = PMP::compute_face_normal(f, mesh);
+      if (normal == CGAL::NULL_VECTOR) fail_input(path, polygon + " has no area");
+      if (polygon_crosses_itself(face_corners(f, mesh), normal))
+        fail_input(path, polygon + " crosses itself");
     }
-    if (!triangulated) fail_input(path, "a polygon could not be triangulated (it crosses itself?)");
+    if (!PMP::triangulate_faces(mesh)) fail_input(path, "a polygon could not be triangulated");
     repairs.push_back("triangulated " + std::to_string(polygons_split) + " polygons");
   }
   mesh.collect_garbage();
