@@ -6,6 +6,7 @@
 #include "common/App_error.h"
 #include "common/clean_triangle_soup.h"
 #include "common/mesh_io.h"
+#include "common/obj_writer.h"
 #include "common/polygon_crossing.h"
 #include "common/small_components.h"
 #include "common/soup_readers.h"
@@ -14,6 +15,8 @@
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair.h>
+
+#include <cgal_policies/Corner_attributes.h>
 
 #include <gtest/gtest.h>
 
@@ -28,9 +31,11 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <random>
 #include <regex>
 #include <sstream>
@@ -1011,3 +1016,194 @@ TEST(PolygonCrossing, TheReaderRefusesACrossingPolygonAndTriangulatesASimpleOne)
 }
 
 }  // namespace polygon_crossing
+
+// ---------------------------------------------------------------------------------------------
+// Texture coordinates, normals and materials of OBJ corners: read onto the mesh, written back.
+namespace corner_attributes {
+
+using apps::Corner_tables;
+using apps::Mesh;
+using Attributes = cgal_policies::Corner_attributes<apps::Point>;
+constexpr std::size_t kNone = Corner_tables::kNoEntry;
+
+TEST(CornerAttributes, ObjTablesAndTheEntriesOfEachCorner) {
+  const apps::Polygon_soup soup = apps::parse_obj(
+      "f",
+      "mtllib a.mtl b.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nvt 0 0\nvt 1 0\n"
+      "vt 1 1 0\nvn 0 0 1\nusemtl red\nf 1/1 3/-1/1 4//-1\nusemtl blue\nf 1/1/1 2/2 3\n"
+      "usemtl red\nf 4 1 3\n");
+  const Corner_tables& t = soup.corners;
+  EXPECT_EQ(t.uvs, (std::vector<std::array<double, 2>>{{0, 0}, {1, 0}, {1, 1}}));
+  ASSERT_EQ(t.normals.size(), 1u);
+  EXPECT_EQ(t.normals[0], apps::Kernel::Vector_3(0, 0, 1));
+  EXPECT_EQ(t.polygon_uvs,
+            (std::vector<std::vector<std::size_t>>{
+                {kNone, kNone, kNone}, {0, 2, kNone}, {0, 1, kNone}, {kNone, kNone, kNone}}));
+  EXPECT_EQ(t.polygon_normals,
+            (std::vector<std::vector<std::size_t>>{
+                {kNone, kNone, kNone}, {kNone, 0, 0}, {0, kNone, kNone}, {kNone, kNone, kNone}}));
+  EXPECT_EQ(t.material_libraries, (std::vector<std::string>{"a.mtl", "b.mtl"}));
+  EXPECT_EQ(t.material_names, (std::vector<std::string>{"red", "blue"}));
+  EXPECT_EQ(t.polygon_materials, (std::vector<std::uint32_t>{Corner_tables::kNoMaterial, 0, 1, 0}));
+}
+
+TEST(CornerAttributes, AFileWithoutThemHasEmptyLists) {
+  const apps::Polygon_soup soup =
+      apps::parse_obj("f", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1 2 3\n");
+  EXPECT_TRUE(soup.corners.polygon_uvs.empty());
+  EXPECT_TRUE(soup.corners.polygon_normals.empty());
+  EXPECT_TRUE(soup.corners.polygon_materials.empty());
+}
+
+TEST(CornerAttributes, BadEntriesAreOneBadInputLine) {
+  const auto cause = [](const std::string& bytes) {
+    try {
+      apps::parse_obj("f", bytes);
+    } catch (const apps::App_error& e) {
+      EXPECT_EQ(e.code(), apps::exit_bad_input);
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  EXPECT_EQ(cause(triangle + "vt 0 0\nf 1/2 2/1 3/1\n"),
+            "f: line 5: '1/2' names a texture coordinate (vt) that is not read before it");
+  EXPECT_EQ(cause(triangle + "f 1//1 2 3\nvn 0 0 1\n"),
+            "f: line 4: '1//1' names a normal (vn) that is not read before it");
+  EXPECT_EQ(cause(triangle + "vt nan 0\n"),
+            "f: line 4: a texture coordinate needs one or two finite numbers, u [v]");
+  EXPECT_EQ(cause(triangle + "vn 0 1\n"), "f: line 4: a normal needs three finite numbers, x y z");
+  EXPECT_EQ(cause(triangle + "f 1/ 2 3\n"),
+            "f: line 4: '1/' has a slash but names no texture coordinate or normal");
+  EXPECT_EQ(cause(triangle + "usemtl\n"), "f: line 4: usemtl needs a material name");
+}
+
+// Each face's corners as (point, uv, normal), starting at the lowest point, and its material.
+struct Face_corners {
+  std::vector<std::array<double, 8>> corners;
+  std::uint32_t material;
+  bool operator==(const Face_corners& o) const {
+    // NaN marks a corner without a value: compare bit patterns, not numbers.
+    return material == o.material && corners.size() == o.corners.size() &&
+           std::memcmp(corners.data(), o.corners.data(), corners.size() * sizeof corners[0]) == 0;
+  }
+};
+
+std::vector<Face_corners> face_corners(const Mesh& mesh) {
+  const Attributes a(mesh);
+  std::vector<Face_corners> faces;
+  for (const auto f : mesh.faces()) {
+    Face_corners face{{}, a.materials ? (*a.materials)[f] : Attributes::kNoMaterial};
+    for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      const apps::Point& p = mesh.point(mesh.target(h));
+      const Attributes::Uv uv = a.uvs ? (*a.uvs)[h] : Attributes::Uv{-1, -1};
+      const apps::Kernel::Vector_3 n =
+          a.normals ? (*a.normals)[h] : apps::Kernel::Vector_3(-1, -1, -1);
+      face.corners.push_back({p.x(), p.y(), p.z(), uv[0], uv[1], n.x(), n.y(), n.z()});
+    }
+    std::rotate(face.corners.begin(), std::min_element(face.corners.begin(), face.corners.end()),
+                face.corners.end());
+    faces.push_back(face);
+  }
+  return faces;
+}
+
+fs::path scratch_folder(const std::string& name) {
+  const fs::path folder =
+      fs::path(testing::TempDir()) / ("corner_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(folder);
+  fs::create_directories(folder / "out");
+  return folder;
+}
+
+TEST(CornerAttributes, APolygonsTrianglesKeepItsCornersAndMaterial) {
+  const fs::path folder = scratch_folder("polygon");
+  // A pentagon with a corner of each texture coordinate, beside a triangle of no material.
+  std::ofstream(folder / "in.obj")
+      << "mtllib looks.mtl\nv 0 0 0\nv 2 0 0\nv 3 1 0\nv 1 2 0\nv -1 1 0\nv 1 -1 0\n"
+         "vt 0 0\nvt 1 0\nvt 1 1\nvt 0.5 1\nvt 0 1\nvn 0 0 1\nf 1 6 2\nusemtl wood\n"
+         "f 1/1/1 2/2/1 3/3/1 4/4/1 5/5/1\n";
+  apps::Read_report report;
+  const Mesh mesh = apps::read_triangle_mesh((folder / "in.obj").string(), &report,
+                                             apps::Corner_attribute_reading::keep);
+  ASSERT_EQ(mesh.number_of_faces(), 4u);
+  EXPECT_EQ(report.materials.names, std::vector<std::string>{"wood"});
+  EXPECT_EQ(report.materials.libraries, std::vector<std::string>{(folder / "looks.mtl").string()});
+  const Attributes a(mesh);
+  ASSERT_TRUE(a.uvs && a.normals && a.materials);
+  std::size_t wood_corners = 0;
+  for (const auto f : mesh.faces())
+    for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      const apps::Point& p = mesh.point(mesh.target(h));
+      if ((*a.materials)[f] == Attributes::kNoMaterial) {
+        EXPECT_TRUE(std::isnan((*a.uvs)[h][0]));
+        continue;
+      }
+      ++wood_corners;
+      EXPECT_EQ((*a.normals)[h], apps::Kernel::Vector_3(0, 0, 1));
+      // The pentagon's texture coordinates go with its points.
+      const std::map<std::pair<double, double>, Attributes::Uv> uv_of = {{{0, 0}, {0, 0}},
+                                                                         {{2, 0}, {1, 0}},
+                                                                         {{3, 1}, {1, 1}},
+                                                                         {{1, 2}, {0.5, 1}},
+                                                                         {{-1, 1}, {0, 1}}};
+      EXPECT_EQ((*a.uvs)[h], uv_of.at({p.x(), p.y()}));
+    }
+  EXPECT_EQ(wood_corners, 9u);  // three triangles
+
+  // Written into another folder and read back: the same corners, the material file found.
+  const fs::path out = folder / "out" / "again.obj";
+  apps::write_mesh_atomically(mesh, out.string(), report.materials);
+  const std::string text = read_text(out);
+  EXPECT_EQ(text.rfind("# written by cgal_policies\nmtllib ../looks.mtl\n", 0), 0u) << text;
+  apps::Read_report again;
+  EXPECT_EQ(face_corners(apps::read_triangle_mesh(out.string(), &again,
+                                                  apps::Corner_attribute_reading::keep)),
+            face_corners(mesh));
+  EXPECT_EQ(again.materials.libraries, report.materials.libraries);
+  fs::remove_all(folder);
+}
+
+TEST(CornerAttributes, ASoupThatNeedsRepairLosesThemAndSaysSo) {
+  const fs::path folder = scratch_folder("repair");
+  // Two triangles facing apart across their edge: the repair flips one.
+  std::ofstream(folder / "in.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\n"
+                                      "f 1/1 2/1 3/1\nf 2/1 3/1 4/1\n";
+  apps::Read_report report;
+  const Mesh mesh = apps::read_triangle_mesh((folder / "in.obj").string(), &report,
+                                             apps::Corner_attribute_reading::keep);
+  EXPECT_FALSE(Attributes(mesh).any());
+  EXPECT_NE(std::find(report.repairs.begin(), report.repairs.end(),
+                      "dropped the texture coordinates, normals and materials (the repair does "
+                      "not carry them)"),
+            report.repairs.end());
+  fs::remove_all(folder);
+}
+
+TEST(CornerAttributes, ShippedTexturedMeshesRoundTripExactly) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const fs::path folder = scratch_folder("shipped");
+  for (const std::string name : {"spot.obj", "bob_tri.obj"}) {
+    SCOPED_TRACE(name);
+    apps::Read_report report;
+    const Mesh mesh = apps::read_triangle_mesh(test_meshes::data_file(name), &report,
+                                               apps::Corner_attribute_reading::keep);
+    const Attributes a(mesh);
+    ASSERT_TRUE(a.uvs.has_value());
+    std::size_t corners_without_uv = 0;
+    for (const auto h : mesh.halfedges())
+      corners_without_uv += !mesh.is_border(h) && std::isnan((*a.uvs)[h][0]);
+    EXPECT_EQ(corners_without_uv, 0u);
+    const fs::path out = folder / "out" / name;
+    apps::write_mesh_atomically(mesh, out.string(), report.materials);
+    apps::Read_report again;
+    EXPECT_EQ(face_corners(apps::read_triangle_mesh(out.string(), &again,
+                                                    apps::Corner_attribute_reading::keep)),
+              face_corners(mesh));
+    EXPECT_EQ(again.materials.names, report.materials.names);
+    EXPECT_EQ(again.materials.libraries, report.materials.libraries);
+  }
+  fs::remove_all(folder);
+}
+
+}  // namespace corner_attributes

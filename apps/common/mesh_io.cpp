@@ -4,6 +4,7 @@
 #include "atomic_write.h"
 #include "clean_triangle_soup.h"
 #include "declared_counts.h"
+#include "obj_writer.h"
 #include "polygon_crossing.h"
 #include "soup_readers.h"
 
@@ -17,6 +18,7 @@
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <cgal_policies/Corner_attributes.h>
 
 #include <algorithm>
 #include <cctype>
@@ -27,6 +29,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <memory>
 
 namespace PMP = CGAL::Polygon_mesh_processing;
 namespace fs = std::filesystem;
@@ -124,15 +128,101 @@ std::string unused_vertices_removed(std::size_t count) {
   return "removed " + std::to_string(count) + " unused vertices";
 }
 
+using Attributes = cgal_policies::Corner_attributes<Point>;
+
+bool has_corner_attributes(const Corner_tables* corners) {
+  return corners && (!corners->polygon_uvs.empty() || !corners->polygon_normals.empty() ||
+                     !corners->polygon_materials.empty());
+}
+
+// Puts the attributes of `corners` on the mesh built from `polygons`, whose face i is polygon i
+// and whose vertex for point p is vertex_of_point[p].
+void set_corner_attributes(Mesh& mesh, const std::vector<Polygon>& polygons,
+                           const Corner_tables& corners,
+                           const std::vector<Mesh::Vertex_index>& vertex_of_point) {
+  const Attributes attributes =
+      Attributes::add(mesh, !corners.polygon_uvs.empty(), !corners.polygon_normals.empty(),
+                      !corners.polygon_materials.empty());
+  for (std::size_t f = 0; f < polygons.size(); ++f) {
+    const Mesh::Face_index face(static_cast<Mesh::size_type>(f));
+    if (attributes.materials) (*attributes.materials)[face] = corners.polygon_materials[f];
+    for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(face), mesh)) {
+      std::size_t k = 0;
+      while (vertex_of_point[polygons[f][k]] != mesh.target(h)) ++k;
+      if (attributes.uvs && corners.polygon_uvs[f][k] != Corner_tables::kNoEntry)
+        (*attributes.uvs)[h] = corners.uvs[corners.polygon_uvs[f][k]];
+      if (attributes.normals && corners.polygon_normals[f][k] != Corner_tables::kNoEntry)
+        (*attributes.normals)[h] = corners.normals[corners.polygon_normals[f][k]];
+    }
+  }
+}
+
+// Gives the triangles of a polygon the attributes of the polygon's corners at the same vertices,
+// and the polygon's material. CGAL copies the visitor: the copies share one record.
+class Corner_attribute_copier : public PMP::Triangulate_faces::Default_visitor<Mesh> {
+ public:
+  Corner_attribute_copier(Mesh& mesh, const Attributes& attributes)
+      : m_record(std::make_shared<Record>(Record{&mesh, attributes, {}, {}, {}, {}})) {}
+
+  void before_subface_creations(Mesh::Face_index polygon) {
+    Record& r = *m_record;
+    r.vertices.clear();
+    r.uvs.clear();
+    r.normals.clear();
+    r.material = r.attributes.materials ? (*r.attributes.materials)[polygon] : 0;
+    for (const auto h : CGAL::halfedges_around_face(r.mesh->halfedge(polygon), *r.mesh)) {
+      r.vertices.push_back(r.mesh->target(h));
+      if (r.attributes.uvs) r.uvs.push_back((*r.attributes.uvs)[h]);
+      if (r.attributes.normals) r.normals.push_back((*r.attributes.normals)[h]);
+    }
+  }
+
+  void after_subface_created(Mesh::Face_index triangle) {
+    Record& r = *m_record;
+    if (r.attributes.materials) (*r.attributes.materials)[triangle] = r.material;
+    for (const auto h : CGAL::halfedges_around_face(r.mesh->halfedge(triangle), *r.mesh)) {
+      const std::size_t k = std::size_t(
+          std::find(r.vertices.begin(), r.vertices.end(), r.mesh->target(h)) - r.vertices.begin());
+      if (r.attributes.uvs) (*r.attributes.uvs)[h] = r.uvs[k];
+      if (r.attributes.normals) (*r.attributes.normals)[h] = r.normals[k];
+    }
+  }
+
+ private:
+  struct Record {
+    Mesh* mesh;
+    Attributes attributes;
+    std::vector<Mesh::Vertex_index> vertices;
+    std::vector<Attributes::Uv> uvs;
+    std::vector<Kernel::Vector_3> normals;
+    std::uint32_t material;
+  };
+  std::shared_ptr<Record> m_record;
+};
+
 // The general path, for soups that are not a clean triangle mesh as they stand: CGAL's soup
 // repair when the soup is not a polygon mesh, then stitching and triangulation.
 Mesh repaired_triangle_mesh(const std::string& path, std::vector<Point>& points,
-                            std::vector<Polygon>& polygons, std::vector<std::string>& repairs) {
-  if (!PMP::is_polygon_soup_a_polygon_mesh(polygons)) repair_soup(points, polygons, repairs);
+                            std::vector<Polygon>& polygons, const Corner_tables* corners,
+                            std::vector<std::string>& repairs) {
+  if (!PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
+    repair_soup(points, polygons, repairs);
+    if (has_corner_attributes(corners))
+      repairs.push_back(
+          "dropped the texture coordinates, normals and materials (the repair does "
+          "not carry them)");
+    corners = nullptr;
+  }
   if (polygons.empty()) fail_input(path, "no faces left after dropping degenerate ones");
 
   Mesh mesh;
   PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  if (has_corner_attributes(corners)) {
+    std::vector<Mesh::Vertex_index> vertex_of_point;
+    for (std::size_t p = 0; p < points.size(); ++p)
+      vertex_of_point.emplace_back(static_cast<Mesh::size_type>(p));
+    set_corner_attributes(mesh, polygons, *corners, vertex_of_point);
+  }
   // Orienting cuts the soup wherever it is not manifold, more than it must; stitching puts back
   // together the border edges that can be joined without breaking manifoldness.
   if (!repairs.empty()) {
@@ -153,7 +243,10 @@ Mesh repaired_triangle_mesh(const std::string& path, std::vector<Point>& points,
       if (polygon_crosses_itself(face_corners(f, mesh), normal))
         fail_input(path, polygon + " crosses itself");
     }
-    if (!PMP::triangulate_faces(mesh)) fail_input(path, "a polygon could not be triangulated");
+    const Attributes attributes(mesh);
+    if (!PMP::triangulate_faces(
+            mesh, CGAL::parameters::visitor(Corner_attribute_copier(mesh, attributes))))
+      fail_input(path, "a polygon could not be triangulated");
     repairs.push_back("triangulated " + std::to_string(polygons_split) + " polygons");
   }
   mesh.collect_garbage();
@@ -170,7 +263,8 @@ bool has_supported_mesh_extension(const std::string& path) {
                      [&](const char* known) { return ext == known; });
 }
 
-Mesh read_triangle_mesh(const std::string& path, Read_report* report) {
+Mesh read_triangle_mesh(const std::string& path, Read_report* report,
+                        Corner_attribute_reading attributes) {
   check_readable_file(path);
   check_declared_counts(path);
   const std::string extension = lower_extension(path);
@@ -179,7 +273,16 @@ Mesh read_triangle_mesh(const std::string& path, Read_report* report) {
     Polygon_soup soup = extension == ".obj"   ? parse_obj(path, bytes)
                         : extension == ".off" ? parse_off(path, bytes)
                                               : parse_ply(path, bytes);
-    return triangle_mesh_from_soup(path, soup.points, soup.polygons, report);
+    if (attributes == Corner_attribute_reading::drop)
+      return triangle_mesh_from_soup(path, soup.points, soup.polygons, report);
+    Mesh mesh = triangle_mesh_from_soup(path, soup.points, soup.polygons, report, &soup.corners);
+    if (report && Attributes(mesh).materials) {
+      const fs::path folder = fs::absolute(path).parent_path();
+      for (const std::string& library : soup.corners.material_libraries)
+        report->materials.libraries.push_back((folder / library).lexically_normal().string());
+      report->materials.names = soup.corners.material_names;
+    }
+    return mesh;
   }
   std::vector<Point> points;
   std::vector<Polygon> polygons;
@@ -195,15 +298,27 @@ Mesh read_triangle_mesh(const std::string& path, Read_report* report) {
 }
 
 Mesh triangle_mesh_from_soup(const std::string& path, std::vector<Point>& points,
-                             std::vector<Polygon>& polygons, Read_report* report) {
+                             std::vector<Polygon>& polygons, Read_report* report,
+                             const Corner_tables* corners) {
   check_soup(path, points, polygons);
   Mesh mesh;
   std::size_t unused_points = 0;
   std::vector<std::string> repairs;
   if (build_mesh_from_clean_triangles(points, polygons, mesh, unused_points)) {
     if (unused_points > 0) repairs.push_back(unused_vertices_removed(unused_points));
+    if (has_corner_attributes(corners)) {
+      // The used points, in order, are the vertices.
+      constexpr auto kUnused = std::numeric_limits<Mesh::size_type>::max();
+      std::vector<Mesh::Vertex_index> vertex_of_point(points.size(), Mesh::Vertex_index(kUnused));
+      for (const Polygon& polygon : polygons)
+        for (std::size_t p : polygon) vertex_of_point[p] = Mesh::Vertex_index(0);
+      Mesh::size_type next = 0;
+      for (Mesh::Vertex_index& v : vertex_of_point)
+        if (v != Mesh::Vertex_index(kUnused)) v = Mesh::Vertex_index(next++);
+      set_corner_attributes(mesh, polygons, *corners, vertex_of_point);
+    }
   } else {
-    mesh = repaired_triangle_mesh(path, points, polygons, repairs);
+    mesh = repaired_triangle_mesh(path, points, polygons, corners, repairs);
   }
   if (report) report->repairs = repairs;
   return mesh;
@@ -219,7 +334,21 @@ void check_output_path(const std::string& input, const std::string& output, bool
   check_output_folder(output);
 }
 
-void write_mesh_atomically(const Mesh& mesh, const std::string& path) {
+void write_mesh_atomically(const Mesh& mesh, const std::string& path,
+                           const Material_references& materials) {
+  if (lower_extension(path) == ".obj" && Attributes(mesh).any()) {
+    const fs::path folder = fs::absolute(path).parent_path();
+    std::vector<std::string> libraries;
+    for (const std::string& library : materials.libraries)
+      libraries.push_back(fs::path(library).lexically_relative(folder).string());
+    const std::string text = obj_text(mesh, libraries, materials.names);
+    write_atomically(path, [&](const std::string& temporary) {
+      std::ofstream file(temporary, std::ios::binary);
+      file.write(text.data(), std::streamsize(text.size()));
+      return bool(file.flush());
+    });
+    return;
+  }
   write_atomically(path, [&](const std::string& temporary) {
     return CGAL::IO::write_polygon_mesh(temporary, mesh, CGAL::parameters::stream_precision(17));
   });

@@ -4,6 +4,7 @@
 #define CGAL_POLICIES_APPS_MESH_IO_H
 
 #include "Mesh_types.h"
+#include "soup_readers.h"
 
 #include <cstddef>
 #include <string>
@@ -11,29 +12,47 @@
 
 namespace apps {
 
+// What the faces of a mesh read from an OBJ file refer to outside it: the material libraries
+// (paths resolved against the folder of the file read) and the material names that the face
+// material map (cgal_policies::Corner_attributes) indexes.
+struct Material_references {
+  std::vector<std::string> libraries, names;
+};
+
 struct Read_report {
   std::vector<std::string> repairs;  // what was repaired, one phrase each; empty when nothing was
+  Material_references materials;     // when the corner attributes were kept
 };
+
+// Whether the reader puts a file's texture coordinates, normals and materials on the mesh
+// (cgal_policies::Corner_attributes), or reads the surface alone. Only OBJ files carry them yet.
+enum class Corner_attribute_reading { drop, keep };
 
 bool has_supported_mesh_extension(const std::string& path);
 
 // Reads a triangle mesh; throws App_error(exit_bad_input, "<path>: <cause>") when it cannot.
-Mesh read_triangle_mesh(const std::string& path, Read_report* report = nullptr);
+Mesh read_triangle_mesh(const std::string& path, Read_report* report = nullptr,
+                        Corner_attribute_reading attributes = Corner_attribute_reading::drop);
 
 // The reader's second half: checks the soup (faces, finite points, indices in range); builds the
 // mesh directly when the soup is a clean triangle mesh, otherwise repairs it when it is not a
-// polygon mesh as it stands, and triangulates. Errors name `source`, as above.
+// polygon mesh as it stands, and triangulates. Errors name `source`, as above. The corner
+// attributes of `corners`, when given, go onto the mesh (the triangles of a polygon get the
+// polygon's); a soup that needs repair loses them, and the report says so.
 Mesh triangle_mesh_from_soup(const std::string& source, std::vector<Point>& points,
                              std::vector<std::vector<std::size_t>>& polygons,
-                             Read_report* report = nullptr);
+                             Read_report* report = nullptr, const Corner_tables* corners = nullptr);
 
 // Throws App_error(exit_usage) when `output` cannot be a mesh file or would overwrite `input`,
 // App_error(exit_bad_output) when its folder does not exist.
 void check_output_path(const std::string& input, const std::string& output, bool force);
 
 // Writes by extension with full precision, all or nothing (write_atomically); throws
-// App_error(exit_bad_output) and leaves no file behind when that fails.
-void write_mesh_atomically(const Mesh& mesh, const std::string& path);
+// App_error(exit_bad_output) and leaves no file behind when that fails. An OBJ file gets the
+// mesh's corner attributes too: its texture coordinates and normals per corner, and `materials`
+// (mtllib paths made relative to the file's folder, a usemtl line wherever the material changes).
+void write_mesh_atomically(const Mesh& mesh, const std::string& path,
+                           const Material_references& materials = {});
 
 }  // namespace apps
 

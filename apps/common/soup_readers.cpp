@@ -154,21 +154,93 @@ namespace {
 
 // --- OBJ ---
 
-// A corner of an OBJ face, "v", "v/vt", "v//vn" or "v/vt/vn": its point, counted from 1, or back
-// from the last point read when negative. Nothing when it is not such an index or is 0.
-std::optional<std::size_t> obj_corner(std::string_view token, std::size_t points_so_far) {
-  const std::optional<long long> index = number_of<long long>(token.substr(0, token.find('/')));
+constexpr std::size_t kNoEntry = Corner_tables::kNoEntry;
+
+// An OBJ index: counted from 1, or back from the last of the `so_far` entries read when negative.
+// The entry counted from 0; nothing when it is not a whole number, is 0 or counts back too far.
+std::optional<std::size_t> obj_index(std::string_view token, std::size_t so_far) {
+  const std::optional<long long> index = number_of<long long>(token);
   if (!index || *index == 0) return std::nullopt;
   if (*index > 0) return std::size_t(*index - 1);
   const auto back = std::size_t(-(*index + 1)) + 1;  // no overflow at the lowest long long
-  if (back > points_so_far) return std::nullopt;
-  return points_so_far - back;
+  if (back > so_far) return std::nullopt;
+  return so_far - back;
+}
+
+// A corner of an OBJ face, "v", "v/vt", "v//vn" or "v/vt/vn".
+struct Obj_corner {
+  std::size_t point = 0, uv = kNoEntry, normal = kNoEntry;
+};
+
+// The corner, or the reason it is not one. A texture coordinate or normal must be read before
+// the face that names it; a point may come after (the reader checks every index at the end).
+std::optional<Obj_corner> obj_corner(std::string_view token, const Polygon_soup& soup,
+                                     std::string& why) {
+  const std::size_t first_slash = token.find('/');
+  Obj_corner corner;
+  const std::optional<std::size_t> point =
+      obj_index(token.substr(0, first_slash), soup.points.size());
+  if (!point) {
+    why = "is not a vertex index (1 and up, or negative to count back)";
+    return std::nullopt;
+  }
+  corner.point = *point;
+  if (first_slash == std::string_view::npos) return corner;
+  const std::string_view rest = token.substr(first_slash + 1);
+  const std::size_t second_slash = rest.find('/');
+  const std::string_view uv = rest.substr(0, second_slash);
+  const std::string_view normal =
+      second_slash == std::string_view::npos ? std::string_view() : rest.substr(second_slash + 1);
+  // The entry `index` names among the `read` entries of its table read so far.
+  const auto entry = [&](std::string_view index, std::size_t read, const char* what,
+                         std::size_t& found) {
+    const std::optional<std::size_t> named = obj_index(index, read);
+    if (named && *named < read) {
+      found = *named;
+      return true;
+    }
+    why = std::string("names a ") + what + " that is not read before it";
+    return false;
+  };
+  if (!uv.empty() && !entry(uv, soup.corners.uvs.size(), "texture coordinate (vt)", corner.uv))
+    return std::nullopt;
+  if (!normal.empty() && !entry(normal, soup.corners.normals.size(), "normal (vn)", corner.normal))
+    return std::nullopt;
+  if (uv.empty() && (second_slash == std::string_view::npos || normal.empty())) {
+    why = "has a slash but names no texture coordinate or normal";
+    return std::nullopt;
+  }
+  return corner;
+}
+
+// Appends a polygon's entries to `lists` (one list per polygon), which stays empty until some
+// polygon names an entry; the polygons before that one get lists of `none`.
+template <typename Entry>
+void add_polygon_entries(std::vector<Entry> entries, Entry none, const Polygon_soup& soup,
+                         std::vector<std::vector<Entry>>& lists) {
+  if (lists.empty() &&
+      std::all_of(entries.begin(), entries.end(), [&](const Entry& e) { return e == none; }))
+    return;
+  for (std::size_t f = lists.size(); f < soup.polygons.size(); ++f)
+    lists.emplace_back(soup.polygons[f].size(), none);
+  lists.push_back(std::move(entries));
+}
+
+// Pads `lists`, when not empty, with lists of `none` up to one per polygon.
+template <typename Entry>
+void pad_polygon_entries(Entry none, const Polygon_soup& soup,
+                         std::vector<std::vector<Entry>>& lists) {
+  if (lists.empty()) return;
+  for (std::size_t f = lists.size(); f < soup.polygons.size(); ++f)
+    lists.emplace_back(soup.polygons[f].size(), none);
 }
 
 }  // namespace
 
 Polygon_soup parse_obj(const std::string& source, std::string_view bytes) {
   Polygon_soup soup;
+  Corner_tables& corners = soup.corners;
+  std::uint32_t material = Corner_tables::kNoMaterial;
   Content_lines lines(bytes);
   for (std::optional<std::string_view> line = lines.next(); line; line = lines.next()) {
     Tokens tokens(*line);
@@ -178,20 +250,53 @@ Polygon_soup parse_obj(const std::string& source, std::string_view bytes) {
       const std::optional<Point> point = next_point(tokens);
       if (!point) fail(source, where() + "a vertex needs three numbers, x y z");
       soup.points.push_back(*point);  // w or a colour after them is skipped
+    } else if (keyword == "vt") {
+      const std::optional<double> u = number_of<double>(tokens.next());
+      const std::string_view v_token = tokens.next();
+      const std::optional<double> v = v_token.empty() ? 0.0 : number_of<double>(v_token);
+      if (!u || !v || !std::isfinite(*u) || !std::isfinite(*v))
+        fail(source, where() + "a texture coordinate needs one or two finite numbers, u [v]");
+      corners.uvs.push_back({*u, *v});  // a w after them is skipped
+    } else if (keyword == "vn") {
+      const std::optional<Point> normal = next_point(tokens);
+      if (!normal || !std::isfinite(normal->x()) || !std::isfinite(normal->y()) ||
+          !std::isfinite(normal->z()))
+        fail(source, where() + "a normal needs three finite numbers, x y z");
+      corners.normals.push_back(*normal - CGAL::ORIGIN);
     } else if (keyword == "f") {
-      std::vector<std::size_t> polygon;
-      for (std::string_view corner = tokens.next(); !corner.empty(); corner = tokens.next()) {
-        const std::optional<std::size_t> index = obj_corner(corner, soup.points.size());
-        if (!index)
-          fail(source, where() + "'" + std::string(corner.substr(0, 20)) +
-                           "' is not a vertex index (1 and up, or negative to count back)");
-        polygon.push_back(*index);
+      std::vector<std::size_t> polygon, uvs, normals;
+      for (std::string_view token = tokens.next(); !token.empty(); token = tokens.next()) {
+        std::string why;
+        const std::optional<Obj_corner> corner = obj_corner(token, soup, why);
+        if (!corner) fail(source, where() + "'" + std::string(token.substr(0, 20)) + "' " + why);
+        polygon.push_back(corner->point);
+        uvs.push_back(corner->uv);
+        normals.push_back(corner->normal);
       }
       if (polygon.size() < 3) fail(source, where() + "a face needs at least three corners");
+      add_polygon_entries(std::move(uvs), kNoEntry, soup, corners.polygon_uvs);
+      add_polygon_entries(std::move(normals), kNoEntry, soup, corners.polygon_normals);
+      if (material != Corner_tables::kNoMaterial || !corners.polygon_materials.empty())
+        corners.polygon_materials.resize(soup.polygons.size(), Corner_tables::kNoMaterial);
+      if (!corners.polygon_materials.empty()) corners.polygon_materials.push_back(material);
       soup.polygons.push_back(std::move(polygon));
+    } else if (keyword == "mtllib") {
+      for (std::string_view name = tokens.next(); !name.empty(); name = tokens.next())
+        corners.material_libraries.emplace_back(name);
+    } else if (keyword == "usemtl") {
+      const std::string_view name = tokens.next();
+      if (name.empty()) fail(source, where() + "usemtl needs a material name");
+      const auto known =
+          std::find(corners.material_names.begin(), corners.material_names.end(), name);
+      material = std::uint32_t(known - corners.material_names.begin());
+      if (known == corners.material_names.end()) corners.material_names.emplace_back(name);
     }
-    // Texture coordinates, normals, groups, materials, lines and the rest are not geometry.
+    // Groups, smoothing groups, lines and the rest say nothing about the surface.
   }
+  pad_polygon_entries(kNoEntry, soup, corners.polygon_uvs);
+  pad_polygon_entries(kNoEntry, soup, corners.polygon_normals);
+  if (!corners.polygon_materials.empty())
+    corners.polygon_materials.resize(soup.polygons.size(), Corner_tables::kNoMaterial);
   return soup;
 }
 

@@ -10,21 +10,42 @@
 
 #include "Mesh_types.h"
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace apps {
 
+// What an OBJ file's corners and faces carry besides their points: its tables of texture
+// coordinates and normals, and for each polygon the table entry of each corner (kNoEntry where
+// the corner names none; the lists are empty when no corner names one); its material libraries as
+// the file names them, the material names its faces use, and each polygon's material (an index
+// into the names, or kNoMaterial; empty when no face has one).
+struct Corner_tables {
+  static constexpr std::size_t kNoEntry = std::size_t(-1);
+  static constexpr std::uint32_t kNoMaterial = std::uint32_t(-1);
+  std::vector<std::array<double, 2>> uvs;
+  std::vector<Kernel::Vector_3> normals;
+  std::vector<std::vector<std::size_t>> polygon_uvs, polygon_normals;
+  std::vector<std::string> material_libraries, material_names;
+  std::vector<std::uint32_t> polygon_materials;
+};
+
 struct Polygon_soup {
   std::vector<Point> points;
   std::vector<std::vector<std::size_t>> polygons;
+  Corner_tables corners;  // OBJ only
 };
 
-// OBJ: points from "v" lines (x y z; a w or colour after them is skipped) and polygons from "f"
-// lines, whose corners may carry /vt and /vn (skipped) and count back from the last point when
-// negative. Other lines are skipped. Throws App_error(exit_bad_input, "<source>: line N: <cause>").
+// OBJ: points from "v" lines (x y z; a w or colour after them is skipped), polygons from "f"
+// lines, whose corners may name a texture coordinate ("vt u v") and a normal ("vn x y z") as
+// v/vt, v//vn or v/vt/vn, each counted from 1 or back from the last one read when negative;
+// "mtllib" and "usemtl" lines. Other lines are skipped. Throws
+// App_error(exit_bad_input, "<source>: line N: <cause>"), or "<source>: face F: <cause>" for an
+// entry that is out of range.
 Polygon_soup parse_obj(const std::string& source, std::string_view bytes);
 
 // OFF with an optional ST, C or N prefix (texture coordinates, colours and normals are skipped)

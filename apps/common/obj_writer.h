@@ -1,0 +1,23 @@
+// The OBJ writer for meshes that carry corner attributes (cgal_policies::Corner_attributes);
+// CGAL 5.5's OBJ writer writes points and faces alone.
+#ifndef CGAL_POLICIES_APPS_OBJ_WRITER_H
+#define CGAL_POLICIES_APPS_OBJ_WRITER_H
+
+#include "Mesh_types.h"
+
+#include <string>
+#include <vector>
+
+namespace apps {
+
+// The text of an OBJ file: `mtllib` lines for `material_libraries` (as given), the points (every
+// number written so that reading it back gives the same double), the distinct texture coordinates
+// and normals of the corners, then the faces in the mesh's order, with a `usemtl` line naming
+// `material_names[i]` wherever the face material changes to i. A corner without a texture
+// coordinate or a normal names none.
+std::string obj_text(const Mesh& mesh, const std::vector<std::string>& material_libraries,
+                     const std::vector<std::string>& material_names);
+
+}  // namespace apps
+
+#endif  // CGAL_POLICIES_APPS_OBJ_WRITER_H

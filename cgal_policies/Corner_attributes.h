@@ -1,0 +1,82 @@
+// Attributes on the corners of a CGAL::Surface_mesh. The corner of face(h) at target(h) is the
+// halfedge h, so texture coordinates and normals are halfedge property maps, and a vertex whose
+// corners disagree lies on a seam. A face's material is a face property map (an index into the
+// material names that the file kept). A corner without a value holds NaN; a face without a
+// material, kNoMaterial.
+#ifndef CGAL_POLICIES_CORNER_ATTRIBUTES_H
+#define CGAL_POLICIES_CORNER_ATTRIBUTES_H
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <optional>
+
+namespace cgal_policies {
+
+template <class Point>
+class Corner_attributes {
+ public:
+  using Mesh = CGAL::Surface_mesh<Point>;
+  using Vector = typename CGAL::Kernel_traits<Point>::Kernel::Vector_3;
+  using Uv = std::array<double, 2>;
+  using Uv_map = typename Mesh::template Property_map<typename Mesh::Halfedge_index, Uv>;
+  using Normal_map = typename Mesh::template Property_map<typename Mesh::Halfedge_index, Vector>;
+  using Material_map =
+      typename Mesh::template Property_map<typename Mesh::Face_index, std::uint32_t>;
+
+  static constexpr std::uint32_t kNoMaterial = std::numeric_limits<std::uint32_t>::max();
+  static constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+
+  // The maps `mesh` already has.
+  explicit Corner_attributes(const Mesh& mesh)
+      : uvs(find<typename Mesh::Halfedge_index, Uv>(mesh, kUvName)),
+        normals(find<typename Mesh::Halfedge_index, Vector>(mesh, kNormalName)),
+        materials(find<typename Mesh::Face_index, std::uint32_t>(mesh, kMaterialName)) {}
+
+  // Adds the maps asked for (and keeps those `mesh` has), every value none.
+  static Corner_attributes add(Mesh& mesh, bool with_uvs, bool with_normals, bool with_materials) {
+    if (with_uvs)
+      mesh.template add_property_map<typename Mesh::Halfedge_index, Uv>(kUvName, {kNone, kNone});
+    if (with_normals)
+      mesh.template add_property_map<typename Mesh::Halfedge_index, Vector>(
+          kNormalName, Vector(kNone, kNone, kNone));
+    if (with_materials)
+      mesh.template add_property_map<typename Mesh::Face_index, std::uint32_t>(kMaterialName,
+                                                                               kNoMaterial);
+    return Corner_attributes(mesh);
+  }
+
+  // Removes every map of this kind from `mesh`.
+  static void remove(Mesh& mesh) {
+    Corner_attributes found(mesh);
+    if (found.uvs) mesh.remove_property_map(*found.uvs);
+    if (found.normals) mesh.remove_property_map(*found.normals);
+    if (found.materials) mesh.remove_property_map(*found.materials);
+  }
+
+  bool any() const { return uvs || normals || materials; }
+
+  std::optional<Uv_map> uvs;
+  std::optional<Normal_map> normals;
+  std::optional<Material_map> materials;
+
+ private:
+  static constexpr const char* kUvName = "h:cgal_policies:uv";
+  static constexpr const char* kNormalName = "h:cgal_policies:normal";
+  static constexpr const char* kMaterialName = "f:cgal_policies:material";
+
+  template <class Index, class Value>
+  static std::optional<typename Mesh::template Property_map<Index, Value>> find(const Mesh& mesh,
+                                                                                const char* name) {
+    const auto [map, found] = mesh.template property_map<Index, Value>(name);
+    if (!found) return std::nullopt;
+    return map;
+  }
+};
+
+}  // namespace cgal_policies
+
+#endif  // CGAL_POLICIES_CORNER_ATTRIBUTES_H
