@@ -1,6 +1,7 @@
 #include "clean_triangle_soup.h"
 
 #include <limits>
+#include <utility>
 
 namespace apps {
 namespace {
@@ -80,7 +81,8 @@ bool is_one_fan(const Mesh& mesh, Vertex v, std::size_t expected) {
 
 bool build_mesh_from_clean_triangles(const std::vector<Point>& points,
                                      const std::vector<std::vector<std::size_t>>& polygons,
-                                     Mesh& mesh, std::size_t& unused_points) {
+                                     Mesh& mesh, std::size_t& unused_points,
+                                     std::vector<Mesh::Vertex_index>* vertex_of_point) {
   mesh.clear();
   const std::vector<std::size_t> corners = triangle_corners(polygons);
   if (corners.empty()) return false;
@@ -151,6 +153,7 @@ bool build_mesh_from_clean_triangles(const std::vector<Point>& points,
       return false;
     }
   }
+  if (vertex_of_point) *vertex_of_point = std::move(vertex_of);
   return true;
 }
 

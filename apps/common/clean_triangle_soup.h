@@ -16,9 +16,11 @@ namespace apps {
 // more than two faces, and the faces around each point form one fan. Points no face uses are
 // left out and counted in `unused_points`. Faces, and the used points, keep the soup's order.
 // Returns false and leaves `mesh` empty when the soup is not such a mesh: it needs repair.
+// `vertex_of_point`, when given, gets each point's vertex (a null index for an unused point).
 bool build_mesh_from_clean_triangles(const std::vector<Point>& points,
                                      const std::vector<std::vector<std::size_t>>& polygons,
-                                     Mesh& mesh, std::size_t& unused_points);
+                                     Mesh& mesh, std::size_t& unused_points,
+                                     std::vector<Mesh::Vertex_index>* vertex_of_point = nullptr);
 
 }  // namespace apps
 

@@ -29,7 +29,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <limits>
 #include <memory>
 
 namespace PMP = CGAL::Polygon_mesh_processing;
@@ -304,19 +303,13 @@ Mesh triangle_mesh_from_soup(const std::string& path, std::vector<Point>& points
   Mesh mesh;
   std::size_t unused_points = 0;
   std::vector<std::string> repairs;
-  if (build_mesh_from_clean_triangles(points, polygons, mesh, unused_points)) {
+  std::vector<Mesh::Vertex_index> vertex_of_point;
+  if (build_mesh_from_clean_triangles(
+          points, polygons, mesh, unused_points,
+          has_corner_attributes(corners) ? &vertex_of_point : nullptr)) {
     if (unused_points > 0) repairs.push_back(unused_vertices_removed(unused_points));
-    if (has_corner_attributes(corners)) {
-      // The used points, in order, are the vertices.
-      constexpr auto kUnused = std::numeric_limits<Mesh::size_type>::max();
-      std::vector<Mesh::Vertex_index> vertex_of_point(points.size(), Mesh::Vertex_index(kUnused));
-      for (const Polygon& polygon : polygons)
-        for (std::size_t p : polygon) vertex_of_point[p] = Mesh::Vertex_index(0);
-      Mesh::size_type next = 0;
-      for (Mesh::Vertex_index& v : vertex_of_point)
-        if (v != Mesh::Vertex_index(kUnused)) v = Mesh::Vertex_index(next++);
+    if (has_corner_attributes(corners))
       set_corner_attributes(mesh, polygons, *corners, vertex_of_point);
-    }
   } else {
     mesh = repaired_triangle_mesh(path, points, polygons, corners, repairs);
   }
