@@ -8,6 +8,7 @@
 # the standard preset (10% and 1% for the others), and checks each output with RELEASE_BUILD's
 # mesh_error (default build): valid, no non-manifold vertex, no degenerate face, nothing to
 # repair when read back. Writes out/sanitized/results.tsv, a row per run, as it goes.
+# SANITIZED_MESHES="bunny.obj dragon.ply" runs only those meshes (appending to results.tsv).
 set -uo pipefail
 cd "$(dirname "$0")/.."
 if [ $# -lt 1 ] || [ ! -x "$1/bin/simplify" ]; then
@@ -25,9 +26,11 @@ woody.obj:0.1,0.01 fandisk.obj:0.1,0.02 rocker-arm.obj:0.1,0.01 alligator.obj:0.
 bunny.obj:0.5,0.1,0.01 nefertiti.obj:0.1,0.01 dragon_res2.ply:0.1,0.01 dragon.ply:0.1,0.01"
 runs="gh gh-prob lt classic curvature fusion fast hausdorff lt+fit gh+fit hausdorff+fit"
 field() { grep -o "\"$1\": [^,}]*" "$2" | head -1 | awk '{print $2}' | tr -d '"'; }
-printf 'mesh\tratio\trun\texit\tsan_errors\tseconds\tstop_reason\tout_faces\tvalid\tnon_manifold\tdegenerate\treread_repairs\n' >$out/results.tsv
+header=$(printf 'mesh\tratio\trun\texit\tsan_errors\tseconds\tstop_reason\tout_faces\tvalid\tnon_manifold\tdegenerate\treread_repairs')
+[ -n "${SANITIZED_MESHES:-}" ] && [ -f $out/results.tsv ] || echo "$header" >$out/results.tsv
 for c in $cases; do
   mesh=${c%%:*}
+  [ -n "${SANITIZED_MESHES:-}" ] && [[ " $SANITIZED_MESHES " != *" $mesh "* ]] && continue
   for ratio in $(echo "${c#*:}" | tr ',' ' '); do
     for run in $runs; do
       policy=${run%+fit}
