@@ -46,11 +46,14 @@ std::vector<double> squared_distances(const std::vector<Point>& points, const Fa
 }
 
 // Random samples can only fall short of the maximum distance, most where faces are large: the
-// faces that hold the farthest samples are sampled again on a fine barycentric grid.
+// faces that hold the farthest samples are sampled again on a fine barycentric grid, farthest
+// first, with no more grid points than random samples (so a small sample count stays cheap).
 std::vector<Point> dense_samples_near_the_worst(const Mesh& from, const std::vector<Point>& points,
-                                                const std::vector<double>& d2) {
+                                                const std::vector<double>& d2,
+                                                std::size_t budget) {
   constexpr std::size_t kWorstSamples = 256;
   constexpr int kGridSteps = 24;
+  constexpr std::size_t kGridPoints = (kGridSteps + 1) * (kGridSteps + 2) / 2;
   std::vector<std::size_t> order(points.size());
   std::iota(order.begin(), order.end(), std::size_t(0));
   const std::size_t worst = std::min(kWorstSamples, order.size());
@@ -58,11 +61,12 @@ std::vector<Point> dense_samples_near_the_worst(const Mesh& from, const std::vec
       order.begin(), order.begin() + worst, order.end(),
       [&](std::size_t i, std::size_t j) { return d2[i] > d2[j] || (d2[i] == d2[j] && i < j); });
   Face_tree from_tree(faces(from).first, faces(from).second, from);
-  std::set<Mesh::Face_index> worst_faces;
-  for (std::size_t k = 0; k < worst; ++k)
-    worst_faces.insert(from_tree.closest_point_and_primitive(points[order[k]]).second);
+  const std::size_t max_faces = std::max<std::size_t>(1, budget / kGridPoints);
+  std::set<Mesh::Face_index> seen;
   std::vector<Point> dense;
-  for (Mesh::Face_index f : worst_faces) {
+  for (std::size_t k = 0; k < worst && seen.size() < max_faces; ++k) {
+    const Mesh::Face_index f = from_tree.closest_point_and_primitive(points[order[k]]).second;
+    if (!seen.insert(f).second) continue;
     const auto h = halfedge(f, from);
     const Point& a = from.point(source(h, from));
     const Point& b = from.point(target(h, from));
@@ -94,7 +98,7 @@ One_sided one_sided_distance(const Mesh& from, const Mesh& to, std::size_t sampl
       result.sum_of_squares += d2[i];
     }
   }
-  const std::vector<Point> dense = dense_samples_near_the_worst(from, points, d2);
+  const std::vector<Point> dense = dense_samples_near_the_worst(from, points, d2, samples);
   for (double refined : squared_distances(dense, tree)) result.max = std::max(result.max, refined);
   result.max = std::sqrt(result.max);
   result.mean = face_samples ? sum / double(face_samples) : 0;
