@@ -49,8 +49,7 @@ std::vector<double> squared_distances(const std::vector<Point>& points, const Fa
 // faces that hold the farthest samples are sampled again on a fine barycentric grid, farthest
 // first, with no more grid points than random samples (so a small sample count stays cheap).
 std::vector<Point> dense_samples_near_the_worst(const Mesh& from, const std::vector<Point>& points,
-                                                const std::vector<double>& d2,
-                                                std::size_t budget) {
+                                                const std::vector<double>& d2, std::size_t budget) {
   constexpr std::size_t kWorstSamples = 256;
   constexpr int kGridSteps = 24;
   constexpr std::size_t kGridPoints = (kGridSteps + 1) * (kGridSteps + 2) / 2;
