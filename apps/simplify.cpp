@@ -17,6 +17,7 @@
 #include "common/smoothing.h"
 
 #include <cgal_policies/Border_pair_contraction.h>
+#include <cgal_policies/Corner_attributes.h>
 
 #ifdef CGAL_POLICIES_WITH_VIEWER
 #include "snapshot.h"
@@ -32,7 +33,9 @@ namespace {
 void print_help() {
   std::cout
       << "usage: simplify IN OUT [RATIO] [options]\n"
-         "Simplifies the triangle mesh IN (.off .obj .ply .stl) and writes OUT.\n\n"
+         "Simplifies the triangle mesh IN (.off .obj .ply .stl) and writes OUT. An OBJ OUT\n"
+         "keeps IN's texture coordinates, normals and materials, seams included (hausdorff\n"
+         "and fast keep the materials alone).\n\n"
          "  RATIO, --ratio R      keep this fraction of the faces, 0 < R <= 1\n"
          "  --faces N             keep N faces instead\n"
          "  --policy NAME         "
@@ -110,7 +113,7 @@ std::optional<Snapshot_request> take_snapshot_options(Command_line& cli) {
 void write_mesh_and_snapshot([[maybe_unused]] const Mesh& original, const Mesh& simplified,
                              [[maybe_unused]] const std::string& policy_name,
                              [[maybe_unused]] const std::optional<Snapshot_request>& snapshot,
-                             const std::string& output) {
+                             const std::string& output, const Material_references& materials) {
 #ifdef CGAL_POLICIES_WITH_VIEWER
   // An interrupt before OUT is in place removes the new picture too.
   std::optional<Removed_on_interrupt> picture_without_mesh;
@@ -121,15 +124,26 @@ void write_mesh_and_snapshot([[maybe_unused]] const Mesh& original, const Mesh& 
     picture_without_mesh.emplace(snapshot->png);
   }
   try {
-    write_mesh_atomically(simplified, output);
+    write_mesh_atomically(simplified, output, materials);
   } catch (...) {
     std::error_code ignored;
     if (snapshot) std::filesystem::remove(snapshot->png, ignored);
     throw;
   }
 #else
-  write_mesh_atomically(simplified, output);
+  write_mesh_atomically(simplified, output, materials);
 #endif
+}
+
+using Attributes = cgal_policies::Corner_attributes<Point>;
+
+// "carried" when the run carried the input's texture coordinates and normals through its
+// collapses; "dropped" (and removed) when it could not; "none" when the input had none.
+const char* carried_attributes(Mesh& mesh, bool input_had_them, const Simplify_outcome& outcome) {
+  if (!input_had_them) return "none";
+  if (outcome.attributes_carried) return "carried";
+  Attributes::remove_corner_values(mesh);
+  return "dropped";
 }
 
 int run(int argc, char** argv) {
@@ -150,7 +164,10 @@ int run(int argc, char** argv) {
 
   Read_report read_report;
   const Stopwatch reading;
-  Mesh mesh = read_triangle_mesh(input, &read_report);
+  // Only an OBJ output can hold texture coordinates, normals and materials.
+  Mesh mesh = read_triangle_mesh(input, &read_report,
+                                 writes_corner_attributes(output) ? Corner_attribute_reading::keep
+                                                                  : Corner_attribute_reading::drop);
   const double read_seconds = reading.seconds();
   if (!quiet)
     for (const std::string& repair : read_report.repairs)
@@ -165,6 +182,7 @@ int run(int argc, char** argv) {
   if (merge_report.stitched_edges > 0) mesh.collect_garbage();
   const Dropped_components specks = drop_components_smaller_than(mesh, request.min_component);
 
+  const bool input_had_corner_values = Attributes(mesh).any_corner_values();
   Simplify_outcome outcome;
   {
     Progress_bar bar(input_faces, settings.target_faces, !quiet);
@@ -172,6 +190,10 @@ int run(int argc, char** argv) {
     outcome = policy->run(mesh, settings);
   }
   mesh.collect_garbage();
+  const char* attributes = carried_attributes(mesh, input_had_corner_values, outcome);
+  if (!quiet && std::string(attributes) == "dropped")
+    std::cerr << "simplify: " << input << ": the " << policy->name
+              << " policy cannot carry texture coordinates and normals: dropped\n";
   const Dropped_components vanished =
       request.drop_small_pieces && outcome.stop_reason == Stop_reason::no_collapse_left
           ? drop_smallest_components_until(mesh, settings.target_faces)
@@ -183,7 +205,7 @@ int run(int argc, char** argv) {
           ? fit_to_input(mesh, original, fit.rounds, settings.max_normal_angle_deg, request.bound)
           : Fit_outcome();
   const Stopwatch writing;
-  write_mesh_and_snapshot(original, mesh, policy->name, snapshot, output);
+  write_mesh_and_snapshot(original, mesh, policy->name, snapshot, output, read_report.materials);
   const double write_seconds = writing.seconds();
 
   const std::size_t removed = input_faces - mesh.number_of_faces();
@@ -225,6 +247,7 @@ int run(int argc, char** argv) {
     report.add("fit_refused_flips", fitted.report.refused_flips);
   }
   report.add("repairs", read_report.repairs);
+  report.add("attributes", attributes);
   report.add("merge_distance", request.merge_distance);
   report.add("merged_pairs", merge_report.merged_pairs);
   report.add("stitched_edges", merge_report.stitched_edges);

@@ -51,13 +51,20 @@ class Corner_attributes {
 
   // Removes every map of this kind from `mesh`.
   static void remove(Mesh& mesh) {
+    remove_corner_values(mesh);
     Corner_attributes found(mesh);
-    if (found.uvs) mesh.remove_property_map(*found.uvs);
-    if (found.normals) mesh.remove_property_map(*found.normals);
     if (found.materials) mesh.remove_property_map(*found.materials);
   }
 
+  // Removes the texture coordinates and normals, and keeps the materials.
+  static void remove_corner_values(Mesh& mesh) {
+    Corner_attributes found(mesh);
+    if (found.uvs) mesh.remove_property_map(*found.uvs);
+    if (found.normals) mesh.remove_property_map(*found.normals);
+  }
+
   bool any() const { return uvs || normals || materials; }
+  bool any_corner_values() const { return uvs || normals; }
 
   std::optional<Uv_map> uvs;
   std::optional<Normal_map> normals;

@@ -1211,4 +1211,44 @@ TEST(CornerAttributes, ShippedTexturedMeshesRoundTripExactly) {
   fs::remove_all(folder);
 }
 
+TEST_F(Cli, SimplifyCarriesTextureCoordinatesIntoAnObjOrSaysItDropsThem) {
+  // A flat 6 x 6 grid whose texture coordinates are its x and y over 6: a linear field, which
+  // every carried collapse reproduces.
+  Mesh grid = test_meshes::flat_grid(6);
+  const Attributes painted = Attributes::add(grid, true, false, false);
+  for (const auto h : grid.halfedges())
+    if (!grid.is_border(h))
+      (*painted.uvs)[h] = {grid.point(grid.target(h)).x() / 6, grid.point(grid.target(h)).y() / 6};
+  const fs::path input = file("grid.obj");
+  apps::write_mesh_atomically(grid, input.string());
+  const fs::path out = file("out.obj");
+
+  const Command_result carried =
+      run("simplify", input.string() + " " + out.string() + " --faces 8 --policy gh --json");
+  ASSERT_EQ(carried.exit_code, 0) << carried.err;
+  EXPECT_NE(carried.out.find("\"attributes\": \"carried\""), std::string::npos) << carried.out;
+  const Mesh simplified =
+      apps::read_triangle_mesh(out.string(), nullptr, apps::Corner_attribute_reading::keep);
+  EXPECT_LE(simplified.number_of_faces(), 8u);
+  const Attributes kept(simplified);
+  ASSERT_TRUE(kept.uvs.has_value());
+  for (const auto h : simplified.halfedges()) {
+    if (simplified.is_border(h)) continue;
+    const apps::Point& p = simplified.point(simplified.target(h));
+    EXPECT_NEAR((*kept.uvs)[h][0], p.x() / 6, 1e-12);
+    EXPECT_NEAR((*kept.uvs)[h][1], p.y() / 6, 1e-12);
+  }
+
+  const Command_result dropped = run(
+      "simplify", input.string() + " " + out.string() + " --faces 8 --policy fast --json --force");
+  ASSERT_EQ(dropped.exit_code, 0) << dropped.err;
+  EXPECT_NE(dropped.out.find("\"attributes\": \"dropped\""), std::string::npos) << dropped.out;
+  EXPECT_NE(dropped.err.find("the fast policy cannot carry texture coordinates and normals"),
+            std::string::npos)
+      << dropped.err;
+  EXPECT_FALSE(Attributes(apps::read_triangle_mesh(out.string(), nullptr,
+                                                   apps::Corner_attribute_reading::keep))
+                   .uvs.has_value());
+}
+
 }  // namespace corner_attributes

@@ -9,8 +9,11 @@
 #include "common/mesh_measures.h"
 #include "common/policy_registry.h"
 
+#include <cgal_policies/Corner_attribute_carrier.h>
+#include <cgal_policies/Corner_attributes.h>
 #include <cgal_policies/Fast_threshold_simplifier.h>
 
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 
 #include <gtest/gtest.h>
@@ -21,6 +24,8 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <map>
+#include <set>
 #include <sstream>
 #include <tuple>
 
@@ -524,5 +529,181 @@ INSTANTIATE_TEST_SUITE_P(ShippedMeshes, PinnedResults,
                            if (test.param.max_error > 0) name += "_max_error";
                            return identifier(name);
                          });
+
+// Corner attributes carried through the collapses of every edge-collapse policy that carries them
+// (cgal_policies/Corner_attribute_carrier.h).
+using Attributes = cgal_policies::Corner_attributes<Point>;
+
+const std::vector<std::string> kCarryingPolicies = {"gh",      "gh-prob",   "lt",
+                                                    "classic", "curvature", "fusion"};
+
+// Sets every corner's texture coordinate (and normal, when asked) from the point of its vertex.
+template <class Uv_of>
+void paint_corners(Mesh& mesh, const Uv_of& uv_of, bool with_normals) {
+  const Attributes attributes = Attributes::add(mesh, true, with_normals, false);
+  for (auto h : halfedges(mesh)) {
+    if (mesh.is_border(h)) continue;
+    (*attributes.uvs)[h] = uv_of(face(h, mesh), mesh.point(target(h, mesh)));
+    if (with_normals) (*attributes.normals)[h] = Kernel::Vector_3(0, 0, 1);
+  }
+}
+
+double uv_area(const Mesh& mesh, Mesh::Face_index f) {
+  const Attributes attributes(mesh);
+  const auto h = halfedge(f, mesh);
+  const auto& a = (*attributes.uvs)[h];
+  const auto& b = (*attributes.uvs)[next(h, mesh)];
+  const auto& c = (*attributes.uvs)[prev(h, mesh)];
+  return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+
+TEST(CarriedAttributes, ALinearFieldOnAFlatMeshIsReproducedExactly) {
+  const auto field = [](Mesh::Face_index, const Point& p) {
+    return std::array<double, 2>{0.3 * p.x() + 0.1 * p.y(), -0.2 * p.x() + 0.5 * p.y() + 0.25};
+  };
+  for (const std::string& policy : kCarryingPolicies) {
+    Mesh mesh = flat_grid(10);
+    paint_corners(mesh, field, true);
+    const apps::Simplify_outcome outcome = simplify(mesh, policy, 20);
+    EXPECT_TRUE(outcome.attributes_carried) << policy;
+    EXPECT_LT(mesh.number_of_faces(), 200u) << policy;
+    const Attributes attributes(mesh);
+    ASSERT_TRUE(attributes.uvs && attributes.normals) << policy;
+    for (auto h : halfedges(mesh)) {
+      if (mesh.is_border(h)) continue;
+      const auto expected = field(face(h, mesh), mesh.point(target(h, mesh)));
+      EXPECT_NEAR((*attributes.uvs)[h][0], expected[0], 1e-12) << policy;
+      EXPECT_NEAR((*attributes.uvs)[h][1], expected[1], 1e-12) << policy;
+      EXPECT_EQ((*attributes.normals)[h], Kernel::Vector_3(0, 0, 1)) << policy;
+    }
+    for (auto f : faces(mesh)) EXPECT_GT(uv_area(mesh, f), 0) << policy;
+  }
+}
+
+TEST(CarriedAttributes, ATexturedPlaneToTwoTrianglesKeepsItsCornerUvsExactly) {
+  const auto field = [](Mesh::Face_index, const Point& p) {
+    return std::array<double, 2>{p.x() / 8, p.y() / 8};
+  };
+  for (const std::string& policy : kCarryingPolicies) {
+    Mesh mesh = flat_grid(8);
+    paint_corners(mesh, field, false);
+    simplify(mesh, policy, 2);
+    ASSERT_EQ(mesh.number_of_faces(), 2u) << policy;
+    const Attributes attributes(mesh);
+    for (auto h : halfedges(mesh)) {
+      if (mesh.is_border(h)) continue;
+      const Point& p = mesh.point(target(h, mesh));
+      EXPECT_TRUE((p.x() == 0 || p.x() == 8) && (p.y() == 0 || p.y() == 8)) << policy << ": " << p;
+      EXPECT_EQ((*attributes.uvs)[h], field(face(h, mesh), p)) << policy;
+    }
+  }
+}
+
+// A cube of side 4 with a 4 x 4 grid on each side, and each side its own texture chart: side k
+// maps to [k, k + 1] x [0, 1], so every cube edge is a seam and every cube corner a seam corner.
+TEST(CarriedAttributes, ACubeWithSixChartsKeepsEveryChartWhole) {
+  std::vector<Point> points;
+  std::vector<std::array<int, 3>> triangles;
+  std::map<std::array<int, 3>, int> index;
+  const auto point_index = [&](int x, int y, int z) {
+    const auto [it, added] = index.emplace(std::array<int, 3>{x, y, z}, int(points.size()));
+    if (added) points.emplace_back(x, y, z);
+    return it->second;
+  };
+  // Side k: the point at (s, t) of the side, outward orientation.
+  const auto on_side = [](int k, int s, int t) -> std::array<int, 3> {
+    switch (k) {
+      case 0:
+        return {t, s, 0};
+      case 1:
+        return {s, t, 4};
+      case 2:
+        return {s, 0, t};
+      case 3:
+        return {t, 4, s};
+      case 4:
+        return {0, t, s};
+      default:
+        return {4, s, t};
+    }
+  };
+  for (int k = 0; k < 6; ++k)
+    for (int s = 0; s < 4; ++s)
+      for (int t = 0; t < 4; ++t) {
+        const auto corner = [&](int ds, int dt) {
+          const auto q = on_side(k, s + ds, t + dt);
+          return point_index(q[0], q[1], q[2]);
+        };
+        triangles.push_back({corner(0, 0), corner(1, 0), corner(1, 1)});
+        triangles.push_back({corner(0, 0), corner(1, 1), corner(0, 1)});
+      }
+  const Mesh cube = from_triangles(points, triangles);
+  ASSERT_EQ(cube.number_of_faces(), 192u);
+  ASSERT_TRUE(CGAL::is_closed(cube));
+  // The side a face lies on, from its normal; the chart coordinates of a point of that side.
+  const auto side_of = [](const Mesh& mesh, Mesh::Face_index f) {
+    const auto n = CGAL::Polygon_mesh_processing::compute_face_normal(f, mesh);
+    if (n.z() < -0.5) return 0;
+    if (n.z() > 0.5) return 1;
+    if (n.y() < -0.5) return 2;
+    if (n.y() > 0.5) return 3;
+    return n.x() < -0.5 ? 4 : 5;
+  };
+  const auto chart = [](int k, const Point& p) {
+    const std::array<double, 6> s{p.y(), p.x(), p.x(), p.z(), p.z(), p.y()};
+    const std::array<double, 6> t{p.x(), p.y(), p.z(), p.x(), p.y(), p.z()};
+    return std::array<double, 2>{k + s[k] / 4, t[k] / 4};
+  };
+  for (const std::string& policy : kCarryingPolicies) {
+    Mesh mesh = cube;
+    paint_corners(
+        mesh, [&](Mesh::Face_index f, const Point& p) { return chart(side_of(mesh, f), p); },
+        false);
+    simplify(mesh, policy, 12);
+    EXPECT_EQ(mesh.number_of_faces(), 12u) << policy;
+    EXPECT_TRUE(CGAL::is_closed(mesh)) << policy;
+    const Attributes attributes(mesh);
+    for (auto f : faces(mesh)) {
+      const int k = side_of(mesh, f);
+      EXPECT_GT(uv_area(mesh, f), 0) << policy;
+      for (auto h : halfedges_around_face(halfedge(f, mesh), mesh))
+        EXPECT_EQ((*attributes.uvs)[h], chart(k, mesh.point(target(h, mesh)))) << policy;
+    }
+  }
+}
+
+TEST(CarriedAttributes, SpotKeepsItsSeamCornersAndTurnsNoTextureTriangleOver) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const Mesh input = apps::read_triangle_mesh(data_file("spot.obj"), nullptr,
+                                              apps::Corner_attribute_reading::keep);
+  const Attributes input_attributes(input);
+  ASSERT_TRUE(input_attributes.uvs);
+  Mesh seams_of = input;
+  const cgal_policies::Corner_attribute_carrier<Point> seams(seams_of);
+  std::vector<Point> seam_corners;
+  for (auto v : vertices(input)) {
+    const std::size_t count = seams.seam_edges_at(v);
+    if (count != 0 && count != 2) seam_corners.push_back(input.point(v));
+  }
+  ASSERT_FALSE(seam_corners.empty());
+  const auto not_positive = [](const Mesh& mesh) {
+    std::size_t count = 0;
+    for (auto f : faces(mesh)) count += uv_area(mesh, f) > 0 ? 0 : 1;
+    return count;
+  };
+  for (const std::string& policy : kCarryingPolicies) {
+    Mesh mesh = input;
+    const std::size_t target = input.number_of_faces() / 10;
+    simplify(mesh, policy, target);
+    EXPECT_LE(mesh.number_of_faces(), target) << policy;
+    std::set<std::array<double, 3>> kept;
+    for (auto v : vertices(mesh))
+      kept.insert({mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()});
+    for (const Point& p : seam_corners)
+      EXPECT_TRUE(kept.count({p.x(), p.y(), p.z()})) << policy << ": seam corner " << p << " gone";
+    // Each surviving face keeps its orientation in the texture, and none becomes flat there.
+    EXPECT_LE(not_positive(mesh), not_positive(input)) << policy;
+  }
+}
 
 }  // namespace

@@ -255,6 +255,8 @@ Mesh repaired_triangle_mesh(const std::string& path, std::vector<Point>& points,
 
 }  // namespace
 
+bool writes_corner_attributes(const std::string& path) { return lower_extension(path) == ".obj"; }
+
 bool has_supported_mesh_extension(const std::string& path) {
   static const char* const kExtensions[] = {".off", ".obj", ".ply", ".stl"};
   const std::string ext = lower_extension(path);

@@ -30,6 +30,9 @@ enum class Corner_attribute_reading { drop, keep };
 
 bool has_supported_mesh_extension(const std::string& path);
 
+// Whether write_mesh_atomically writes a mesh's corner attributes to a file of this name (OBJ).
+bool writes_corner_attributes(const std::string& path);
+
 // Reads a triangle mesh; throws App_error(exit_bad_input, "<path>: <cause>") when it cannot.
 Mesh read_triangle_mesh(const std::string& path, Read_report* report = nullptr,
                         Corner_attribute_reading attributes = Corner_attribute_reading::drop);

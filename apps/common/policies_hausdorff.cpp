@@ -41,7 +41,8 @@ Simplify_outcome run_hausdorff(Mesh& mesh, const Simplify_settings& settings) {
   const cgal_policies::Hausdorff_bounded_policies<Mesh, Kernel> hausdorff(mesh, options);
   return run_edge_collapse(mesh, settings, hausdorff.get_cost(), hausdorff.get_placement(),
                            hausdorff.get_filter(),
-                           local ? Error_bound_keeper::runner : Error_bound_keeper::policy);
+                           local ? Error_bound_keeper::runner : Error_bound_keeper::policy,
+                           Attribute_carrying::none);
 }
 
 }  // namespace

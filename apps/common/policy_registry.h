@@ -50,6 +50,7 @@ struct Simplify_outcome {
   Stop_reason stop_reason = Stop_reason::no_collapse_left;
   double fit_seconds = 0;     // the fitting pass after it, when there is one (fitting.h)
   std::size_t fit_flips = 0;  // the edges that pass flipped
+  bool attributes_carried = false;  // the corner attributes were carried through the collapses
 };
 
 struct Policy_entry {

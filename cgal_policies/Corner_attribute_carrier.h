@@ -1,0 +1,279 @@
+// Carries the corner attributes of a CGAL::Surface_mesh (Corner_attributes.h: texture coordinates
+// and normals) through edge collapses, and keeps their seams.
+//
+// A seam edge is one whose two sides disagree at either end, or a border edge (an open chart stays
+// open). A vertex on no seam edge is free; on exactly two it lies along a seam; on one or three and
+// more it is a seam corner. The rules, checked before a collapse:
+// - free + free: anywhere the policy proposes;
+// - free + seam: at the seam vertex, so the seam does not move;
+// - seam + seam: only along a seam edge, removing a vertex that lies along the seam and keeping the
+//   other one where it is (two seam corners never merge), and never when a triangle on the edge has
+//   its other two edges on seams too (its chart would vanish);
+// - no texture triangle of the new star changes its orientation.
+// The new corner values around the kept vertex are interpolated at its new point on the old star,
+// one side of each seam at a time: each corner takes the value at the closest point of the faces it
+// can reach around the two old vertices without crossing a seam edge.
+#ifndef CGAL_POLICIES_CORNER_ATTRIBUTE_CARRIER_H
+#define CGAL_POLICIES_CORNER_ATTRIBUTE_CARRIER_H
+
+#include <cgal_policies/Corner_attributes.h>
+#include <cgal_policies/internal/triangle_closest_point.h>
+
+#include <CGAL/boost/graph/iterator.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <numeric>
+#include <optional>
+#include <vector>
+
+namespace cgal_policies {
+
+template <class Point>
+class Corner_attribute_carrier {
+ public:
+  using Mesh = CGAL::Surface_mesh<Point>;
+  using Attributes = Corner_attributes<Point>;
+  using Uv = typename Attributes::Uv;
+  using Vector = typename Attributes::Vector;
+  using Vertex = typename Mesh::Vertex_index;
+  using Halfedge = typename Mesh::Halfedge_index;
+  using Face = typename Mesh::Face_index;
+
+  explicit Corner_attribute_carrier(Mesh& mesh) : m_mesh(&mesh), m_attributes(mesh) {}
+
+  // Whether the mesh has corner values to carry.
+  bool active() const { return m_attributes.any_corner_values(); }
+
+  // Where the collapse of the profile's edge may put the kept vertex: `proposed`, the point of a
+  // seam vertex, or nowhere.
+  template <class Profile>
+  std::optional<Point> seam_placement(const Profile& profile, const Point& proposed) const {
+    const std::size_t seams0 = seam_edges_at(profile.v0()), seams1 = seam_edges_at(profile.v1());
+    if (seams0 == 0 && seams1 == 0) return proposed;
+    if (seams0 == 0) return profile.p1();
+    if (seams1 == 0) return profile.p0();
+    const Halfedge edge = profile.v0_v1();
+    if (!is_seam_edge(edge)) return std::nullopt;
+    for (Halfedge h : {edge, m_mesh->opposite(edge)})
+      if (!m_mesh->is_border(h) && is_seam_edge(m_mesh->next(h)) && is_seam_edge(m_mesh->prev(h)))
+        return std::nullopt;
+    const bool along0 = seams0 == 2, along1 = seams1 == 2;
+    if (along0 && along1)
+      return CGAL::squared_distance(proposed, profile.p0()) <
+                     CGAL::squared_distance(proposed, profile.p1())
+                 ? profile.p0()
+                 : profile.p1();
+    if (along0) return profile.p1();
+    if (along1) return profile.p0();
+    return std::nullopt;
+  }
+
+  // False when the collapse to `placement` turns a texture triangle over or makes it flat.
+  template <class Profile>
+  bool keeps_uv_orientation(const Profile& profile, const Point& placement) const {
+    if (!m_attributes.uvs) return true;
+    const auto& uvs = *m_attributes.uvs;
+    for (const Corner_value& value : new_corner_values(profile, placement)) {
+      const Halfedge h = value.corner;
+      const Uv& b = uvs[m_mesh->next(h)];
+      const Uv& c = uvs[m_mesh->prev(h)];
+      const double before = uv_area(uvs[h], b, c), after = uv_area(value.uv, b, c);
+      if (std::isfinite(before) && before != 0 && !(before * after > 0)) return false;
+    }
+    return true;
+  }
+
+  // Before the collapse: the values the corners around the kept vertex will take, and those of
+  // the other corners of their faces (the collapse may hand a face the halfedge of a face it
+  // removes, so every corner of the star is written again afterwards).
+  template <class Profile>
+  void collapsing(const Profile& profile, const Point& placement) {
+    m_pending.clear();
+    for (const Corner_value& value : new_corner_values(profile, placement)) {
+      const Halfedge h = value.corner, b = m_mesh->next(h), c = m_mesh->prev(h);
+      Pending_face pending{value.face,
+                           {value, stored_value(b), stored_value(c)},
+                           {m_mesh->target(b), m_mesh->target(c)}};
+      m_pending.push_back(pending);
+    }
+  }
+
+  // After the collapse: the corners of the faces around the kept vertex take their values.
+  void collapsed(Vertex kept) {
+    for (const Pending_face& pending : m_pending) {
+      if (m_mesh->is_removed(pending.face)) continue;
+      for (Halfedge h : CGAL::halfedges_around_face(m_mesh->halfedge(pending.face), *m_mesh)) {
+        const Vertex v = m_mesh->target(h);
+        const Corner_value& value = v == kept                ? pending.corners[0]
+                                    : v == pending.others[0] ? pending.corners[1]
+                                                             : pending.corners[2];
+        if (m_attributes.uvs) (*m_attributes.uvs)[h] = value.uv;
+        if (m_attributes.normals) (*m_attributes.normals)[h] = value.normal;
+      }
+    }
+    m_pending.clear();
+  }
+
+  // Whether the values on the two sides of the edge of `h` differ at either end (or it is a
+  // border).
+  bool is_seam_edge(Halfedge h) const {
+    const Halfedge o = m_mesh->opposite(h);
+    if (m_mesh->is_border(h) || m_mesh->is_border(o)) return true;
+    return !same_values(h, m_mesh->prev(o)) || !same_values(m_mesh->prev(h), o);
+  }
+
+  std::size_t seam_edges_at(Vertex v) const {
+    std::size_t count = 0;
+    for (Halfedge h : CGAL::halfedges_around_target(v, *m_mesh)) count += is_seam_edge(h) ? 1 : 0;
+    return count;
+  }
+
+ private:
+  struct Corner_value {
+    Face face;
+    Halfedge corner;  // before the collapse
+    Uv uv;
+    Vector normal;
+  };
+  struct Pending_face {
+    Face face;
+    std::array<Corner_value, 3> corners;  // at the kept vertex first
+    std::array<Vertex, 2> others;         // the vertices of the other two corners
+  };
+
+  Corner_value stored_value(Halfedge h) const {
+    Corner_value value{m_mesh->face(h),
+                       h,
+                       {Attributes::kNone, Attributes::kNone},
+                       Vector(Attributes::kNone, Attributes::kNone, Attributes::kNone)};
+    if (m_attributes.uvs) value.uv = (*m_attributes.uvs)[h];
+    if (m_attributes.normals) value.normal = (*m_attributes.normals)[h];
+    return value;
+  }
+
+  static bool same_number(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
+
+  bool same_values(Halfedge a, Halfedge b) const {
+    if (m_attributes.uvs) {
+      const Uv &u = (*m_attributes.uvs)[a], &v = (*m_attributes.uvs)[b];
+      if (!same_number(u[0], v[0]) || !same_number(u[1], v[1])) return false;
+    }
+    if (m_attributes.normals) {
+      const Vector &m = (*m_attributes.normals)[a], &n = (*m_attributes.normals)[b];
+      for (int i = 0; i < 3; ++i)
+        if (!same_number(m[i], n[i])) return false;
+    }
+    return true;
+  }
+
+  static double uv_area(const Uv& a, const Uv& b, const Uv& c) {
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+  }
+
+  template <class Profile>
+  std::vector<Corner_value> new_corner_values(const Profile& profile, const Point& x) const {
+    const Mesh& mesh = *m_mesh;
+    const Vertex v0 = profile.v0(), v1 = profile.v1();
+    const auto at_edge_end = [&](Vertex v) { return v == v0 || v == v1; };
+    std::vector<Face> star;
+    for (Vertex v : {v0, v1})
+      for (Halfedge h : CGAL::halfedges_around_target(v, mesh))
+        if (!mesh.is_border(h) && std::find(star.begin(), star.end(), mesh.face(h)) == star.end())
+          star.push_back(mesh.face(h));
+    const auto index_of = [&](Face f) {
+      return std::size_t(std::find(star.begin(), star.end(), f) - star.begin());
+    };
+    // The sides: faces joined across the edges at v0 or v1 that are not seams.
+    std::vector<std::size_t> side(star.size());
+    std::iota(side.begin(), side.end(), std::size_t(0));
+    const auto root = [&](std::size_t i) {
+      while (side[i] != i) i = side[i] = side[side[i]];
+      return i;
+    };
+    for (std::size_t i = 0; i < star.size(); ++i)
+      for (Halfedge h : CGAL::halfedges_around_face(mesh.halfedge(star[i]), mesh)) {
+        const Halfedge o = mesh.opposite(h);
+        if (mesh.is_border(o) || is_seam_edge(h)) continue;
+        if (!at_edge_end(mesh.source(h)) && !at_edge_end(mesh.target(h))) continue;
+        const std::size_t j = index_of(mesh.face(o));
+        if (j < star.size()) side[root(i)] = root(j);
+      }
+    std::vector<Corner_value> values;
+    for (std::size_t i = 0; i < star.size(); ++i) {
+      Halfedge corner;
+      std::size_t ends = 0;
+      for (Halfedge h : CGAL::halfedges_around_face(mesh.halfedge(star[i]), mesh))
+        if (at_edge_end(mesh.target(h))) {
+          corner = h;
+          ++ends;
+        }
+      if (ends != 1) continue;  // a face on the edge: the collapse removes it
+      values.push_back(interpolated(star, root(i), x, star[i], corner, root));
+    }
+    return values;
+  }
+
+  // The corner values at the point of the side's faces closest to x.
+  template <class Root>
+  Corner_value interpolated(const std::vector<Face>& star, std::size_t wanted, const Point& x,
+                            Face face, Halfedge corner, const Root& root) const {
+    const Mesh& mesh = *m_mesh;
+    double best = std::numeric_limits<double>::infinity();
+    std::array<double, 3> weights{};
+    std::array<Halfedge, 3> corners{};
+    for (std::size_t i = 0; i < star.size(); ++i) {
+      if (root(i) != wanted) continue;
+      const Halfedge h = mesh.halfedge(star[i]);
+      const std::array<Halfedge, 3> around{h, mesh.next(h), mesh.prev(h)};
+      const std::array<Point, 3> p{mesh.point(mesh.target(around[0])),
+                                   mesh.point(mesh.target(around[1])),
+                                   mesh.point(mesh.target(around[2]))};
+      const auto eigen = [](const Point& q) { return Eigen::Vector3d(q.x(), q.y(), q.z()); };
+      const Eigen::Vector3d w =
+          internal::closest_barycentric(eigen(x), eigen(p[0]), eigen(p[1]), eigen(p[2]));
+      const Eigen::Vector3d closest = w[0] * eigen(p[0]) + w[1] * eigen(p[1]) + w[2] * eigen(p[2]);
+      const double distance = (closest - eigen(x)).squaredNorm();
+      if (distance < best) {
+        best = distance;
+        weights = {w[0], w[1], w[2]};
+        corners = around;
+      }
+    }
+    Corner_value value{face,
+                       corner,
+                       {Attributes::kNone, Attributes::kNone},
+                       Vector(Attributes::kNone, Attributes::kNone, Attributes::kNone)};
+    for (int k = 0; k < 3; ++k)
+      if (weights[k] == 1) {  // at a corner of the old star: its values, exactly
+        if (m_attributes.uvs) value.uv = (*m_attributes.uvs)[corners[k]];
+        if (m_attributes.normals) value.normal = (*m_attributes.normals)[corners[k]];
+        return value;
+      }
+    if (m_attributes.uvs) {
+      value.uv = {0, 0};
+      for (int k = 0; k < 3; ++k)
+        for (int d = 0; d < 2; ++d) value.uv[d] += weights[k] * (*m_attributes.uvs)[corners[k]][d];
+    }
+    if (m_attributes.normals) {
+      Vector sum(0, 0, 0);
+      for (int k = 0; k < 3; ++k) sum = sum + weights[k] * (*m_attributes.normals)[corners[k]];
+      const double length = std::sqrt(sum.squared_length());
+      value.normal = length > 0 ? sum / length : sum;
+    }
+    return value;
+  }
+
+  Mesh* m_mesh;
+  Attributes m_attributes;
+  std::vector<Pending_face> m_pending;
+};
+
+}  // namespace cgal_policies
+
+#endif  // CGAL_POLICIES_CORNER_ATTRIBUTE_CARRIER_H
