@@ -192,8 +192,8 @@ int run(int argc, char** argv) {
   mesh.collect_garbage();
   const char* attributes = carried_attributes(mesh, input_had_corner_values, outcome);
   if (!quiet && std::string(attributes) == "dropped")
-    std::cerr << "simplify: " << input << ": the " << policy->name
-              << " policy cannot carry texture coordinates and normals: dropped\n";
+    std::cerr << "simplify: " << input << ": texture coordinates and normals dropped (the "
+              << policy->name << " policy cannot carry them, or the mesh has edges of length 0)\n";
   const Dropped_components vanished =
       request.drop_small_pieces && outcome.stop_reason == Stop_reason::no_collapse_left
           ? drop_smallest_components_until(mesh, settings.target_faces)

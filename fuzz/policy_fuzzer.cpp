@@ -3,7 +3,9 @@
 // its documented range, and the passes around the run (small components, smoothing, fitting). The
 // output must be a valid triangle mesh with finite points, manifold when the input is; it meets
 // the face target or says why not; and when the run has a two-sided bound, the evaluator finds
-// no sample farther than it.
+// no sample farther than it. The mesh may carry texture coordinates and normals, cut into charts
+// (so with seams); a run that carries them keeps them finite, keeps every seam corner where it
+// was, and turns no texture triangle over.
 #include "fuzz_checks.h"
 #include "fuzz_soup.h"
 
@@ -15,20 +17,86 @@
 #include "common/small_components.h"
 #include "common/smoothing.h"
 
+#include <cgal_policies/Corner_attribute_carrier.h>
+#include <cgal_policies/Corner_attributes.h>
 #include <cgal_policies/Two_sided_fitter.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <map>
+#include <set>
 #include <string>
 
 namespace {
 
 using fuzz::require;
 
-// The settings come from this many bytes at the front (they need fewer); the mesh from the rest.
+// The settings come from this many bytes at the front (they need fewer; the last one chooses the
+// corner attributes); the mesh from the rest.
 constexpr int kSettingsBytes = 64;
+
+using Attributes = cgal_policies::Corner_attributes<apps::Point>;
+using Carrier = cgal_policies::Corner_attribute_carrier<apps::Point>;
+
+// With bit 0 of `mode`: texture coordinates, a projection of the points on two axes shifted by a
+// chart number drawn per face (so seams where charts meet), and constant normals.
+void paint_corner_attributes(apps::Mesh& mesh, std::uint8_t mode) {
+  if (!(mode & 1)) return;
+  const Attributes attributes = Attributes::add(mesh, true, true, false);
+  const int axis = (mode >> 1) % 3, charts = 1 + (mode >> 3) % 4;
+  for (const auto f : mesh.faces()) {
+    const int chart = int((std::size_t(f) * 2654435761u >> (mode >> 5)) % std::size_t(charts));
+    for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      const apps::Point& p = mesh.point(mesh.target(h));
+      (*attributes.uvs)[h] = {p[axis] + 4.0 * chart, p[(axis + 1) % 3]};
+      (*attributes.normals)[h] = apps::Kernel::Vector_3(0, 0, 1);
+    }
+  }
+}
+
+double uv_area(const apps::Mesh& mesh, const Attributes& attributes, apps::Mesh::Face_index f) {
+  const auto h = mesh.halfedge(f);
+  const auto &a = (*attributes.uvs)[h], &b = (*attributes.uvs)[mesh.next(h)],
+             &c = (*attributes.uvs)[mesh.prev(h)];
+  return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+
+// The texture orientation of every face and the points of the seam corners, before a run.
+struct Seam_record {
+  std::map<apps::Mesh::Face_index, double> uv_areas;
+  std::vector<apps::Point> seam_corners;
+};
+
+Seam_record record_seams(apps::Mesh& mesh) {
+  Seam_record record;
+  const Attributes attributes(mesh);
+  if (!attributes.uvs) return record;
+  for (const auto f : mesh.faces()) record.uv_areas[f] = uv_area(mesh, attributes, f);
+  const Carrier carrier(mesh);
+  for (const auto v : mesh.vertices()) {
+    const std::size_t seams = carrier.seam_edges_at(v);
+    if (seams != 0 && seams != 2) record.seam_corners.push_back(mesh.point(v));
+  }
+  return record;
+}
+
+// After a run that carried the attributes, before its garbage is collected.
+void require_seams_kept(const apps::Mesh& mesh, const Seam_record& record, const std::string& run) {
+  const Attributes attributes(mesh);
+  for (const auto f : mesh.faces()) {
+    for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh))
+      require(std::isfinite((*attributes.uvs)[h][0]) && std::isfinite((*attributes.uvs)[h][1]),
+              run + ": finite texture coordinates");
+    const double before = record.uv_areas.at(f), after = uv_area(mesh, attributes, f);
+    require(before == 0 || before * after > 0, run + ": no texture triangle turned over");
+  }
+  std::set<apps::Point> points;
+  for (const auto v : mesh.vertices()) points.insert(mesh.point(v));
+  for (const apps::Point& p : record.seam_corners)
+    require(points.count(p) == 1, run + ": every seam corner kept where it was");
+}
 
 // A value of `option` from the bytes, within its range; whole numbers and open ranges are kept
 // small so that one input runs in well under a second.
@@ -74,7 +142,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::uint8_t passes = bytes.u8();  // which passes run around the policy, one bit each
   const std::size_t min_component = passes & 1 ? bytes.u8() % 8 : 0;
   fuzz::Byte_reader settings_bytes = bytes;  // the settings are read once the face count is known
-  for (int i = 0; i < kSettingsBytes; ++i) bytes.u8();
+  for (int i = 0; i + 1 < kSettingsBytes; ++i) bytes.u8();
+  const std::uint8_t attribute_mode = bytes.u8();
   fuzz::Soup soup = fuzz::read_soup(bytes);
   apps::Mesh mesh;
   try {
@@ -86,7 +155,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string run = policy.name + " to " + std::to_string(settings.target_faces) + " faces";
 
   apps::drop_components_smaller_than(mesh, min_component);
+  paint_corner_attributes(mesh, attribute_mode);
   const apps::Mesh original = mesh;
+  const Seam_record seams = record_seams(mesh);
   const bool manifold_input =
       fuzz::require_finite_triangle_mesh(original, "the input").non_manifold_vertices == 0;
   // Valid, finite, manifold when the input is, and within the run's bound when it has one.
@@ -96,6 +167,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (bound > 0) require_within(original, mesh, bound, after);
   };
   const apps::Simplify_outcome outcome = policy.run(mesh, settings);
+  if (outcome.attributes_carried) require_seams_kept(mesh, seams, run);
   mesh.collect_garbage();
   double bound = apps::two_sided_bound(policy, settings);
   require_sound(bound, run);

@@ -39,10 +39,9 @@ Simplify_outcome run_hausdorff(Mesh& mesh, const Simplify_settings& settings) {
   const bool local = options.reference == cgal_policies::Hausdorff_reference::local;
   if (settings.max_error > 0 && !local) options.beta = std::min(options.beta, settings.max_error);
   const cgal_policies::Hausdorff_bounded_policies<Mesh, Kernel> hausdorff(mesh, options);
-  return run_edge_collapse(mesh, settings, hausdorff.get_cost(), hausdorff.get_placement(),
-                           hausdorff.get_filter(),
-                           local ? Error_bound_keeper::runner : Error_bound_keeper::policy,
-                           Attribute_carrying::none);
+  return run_edge_collapse(
+      mesh, settings, hausdorff.get_cost(), hausdorff.get_placement(), hausdorff.get_filter(),
+      local ? Error_bound_keeper::runner : Error_bound_keeper::policy, Attribute_carrying::none);
 }
 
 }  // namespace

@@ -48,8 +48,8 @@ struct Simplify_settings {
 struct Simplify_outcome {
   double seconds = 0;  // the simplification alone
   Stop_reason stop_reason = Stop_reason::no_collapse_left;
-  double fit_seconds = 0;     // the fitting pass after it, when there is one (fitting.h)
-  std::size_t fit_flips = 0;  // the edges that pass flipped
+  double fit_seconds = 0;           // the fitting pass after it, when there is one (fitting.h)
+  std::size_t fit_flips = 0;        // the edges that pass flipped
   bool attributes_carried = false;  // the corner attributes were carried through the collapses
 };
 
