@@ -128,6 +128,11 @@ class Corner_attribute_carrier {
     return !same_values(h, m_mesh->prev(o)) || !same_values(m_mesh->prev(h), o);
   }
 
+  // Twice the signed area of a texture triangle: positive when it turns counterclockwise.
+  static double uv_area(const Uv& a, const Uv& b, const Uv& c) {
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+  }
+
   std::size_t seam_edges_at(Vertex v) const {
     std::size_t count = 0;
     for (Halfedge h : CGAL::halfedges_around_target(v, *m_mesh)) count += is_seam_edge(h) ? 1 : 0;
@@ -170,10 +175,6 @@ class Corner_attribute_carrier {
         if (!same_number(m[i], n[i])) return false;
     }
     return true;
-  }
-
-  static double uv_area(const Uv& a, const Uv& b, const Uv& c) {
-    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
   }
 
   template <class Profile>

@@ -58,9 +58,8 @@ void paint_corner_attributes(apps::Mesh& mesh, std::uint8_t mode) {
 
 double uv_area(const apps::Mesh& mesh, const Attributes& attributes, apps::Mesh::Face_index f) {
   const auto h = mesh.halfedge(f);
-  const auto &a = (*attributes.uvs)[h], &b = (*attributes.uvs)[mesh.next(h)],
-             &c = (*attributes.uvs)[mesh.prev(h)];
-  return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+  return Carrier::uv_area((*attributes.uvs)[h], (*attributes.uvs)[mesh.next(h)],
+                          (*attributes.uvs)[mesh.prev(h)]);
 }
 
 // The texture orientation of every face and the points of the seam corners, before a run.

@@ -551,10 +551,8 @@ void paint_corners(Mesh& mesh, const Uv_of& uv_of, bool with_normals) {
 double uv_area(const Mesh& mesh, Mesh::Face_index f) {
   const Attributes attributes(mesh);
   const auto h = halfedge(f, mesh);
-  const auto& a = (*attributes.uvs)[h];
-  const auto& b = (*attributes.uvs)[next(h, mesh)];
-  const auto& c = (*attributes.uvs)[prev(h, mesh)];
-  return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+  return cgal_policies::Corner_attribute_carrier<Point>::uv_area(
+      (*attributes.uvs)[h], (*attributes.uvs)[next(h, mesh)], (*attributes.uvs)[prev(h, mesh)]);
 }
 
 TEST(CarriedAttributes, ALinearFieldOnAFlatMeshIsReproducedExactly) {
