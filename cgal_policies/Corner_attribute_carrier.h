@@ -27,6 +27,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <numeric>
 #include <optional>
@@ -45,10 +46,22 @@ class Corner_attribute_carrier {
   using Halfedge = typename Mesh::Halfedge_index;
   using Face = typename Mesh::Face_index;
 
+  // A policy that solves the kept vertex's values itself (Attribute_quadric_policies): it gives
+  // the values of a collapse between two free vertices, at the new point (the other collapses keep
+  // their old seam values; a value it leaves NaN is interpolated), and hears of each collapse
+  // before it happens.
+  struct Solver {
+    std::function<void(Halfedge edge, const Point& x, Uv& uv, Vector& normal)> free_collapse_values;
+    std::function<void(Halfedge edge)> before_collapse;
+  };
+
   explicit Corner_attribute_carrier(Mesh& mesh) : m_mesh(&mesh), m_attributes(mesh) {}
 
   // Whether the mesh has corner values to carry.
   bool active() const { return m_attributes.any_corner_values(); }
+
+  void solve_with(Solver solver) { m_solver = std::move(solver); }
+  const Attributes& attributes() const { return m_attributes; }
 
   // Where the collapse of the profile's edge may put the kept vertex: `proposed`, the point of a
   // seam vertex, or nowhere.
@@ -94,6 +107,7 @@ class Corner_attribute_carrier {
   // removes, so every corner of the star is written again afterwards).
   template <class Profile>
   void collapsing(const Profile& profile, const Point& placement) {
+    if (m_solver.before_collapse) m_solver.before_collapse(profile.v0_v1());
     m_pending.clear();
     for (const Corner_value& value : new_corner_values(profile, placement)) {
       const Halfedge h = value.corner, b = m_mesh->next(h), c = m_mesh->prev(h);
@@ -106,6 +120,7 @@ class Corner_attribute_carrier {
 
   // After the collapse: the corners of the faces around the kept vertex take their values.
   void collapsed(Vertex kept) {
+    forget_seam_edges_around(kept);
     for (const Pending_face& pending : m_pending) {
       if (m_mesh->is_removed(pending.face)) continue;
       for (Halfedge h : CGAL::halfedges_around_face(m_mesh->halfedge(pending.face), *m_mesh)) {
@@ -133,8 +148,14 @@ class Corner_attribute_carrier {
     return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
   }
 
+  // Remembered per vertex (every collapse asks twice or more), and forgotten around each collapse
+  // (collapsed()): only the edges at the kept vertex change.
   std::size_t seam_edges_at(Vertex v) const {
-    std::size_t count = 0;
+    if (m_seam_counts.size() < m_mesh->num_vertices())
+      m_seam_counts.resize(m_mesh->num_vertices(), kUnknown);
+    std::size_t& count = m_seam_counts[std::size_t(v)];
+    if (count != kUnknown) return count;
+    count = 0;
     for (Halfedge h : CGAL::halfedges_around_target(v, *m_mesh)) count += is_seam_edge(h) ? 1 : 0;
     return count;
   }
@@ -160,6 +181,15 @@ class Corner_attribute_carrier {
     if (m_attributes.uvs) value.uv = (*m_attributes.uvs)[h];
     if (m_attributes.normals) value.normal = (*m_attributes.normals)[h];
     return value;
+  }
+
+  static constexpr std::size_t kUnknown = std::numeric_limits<std::size_t>::max();
+
+  void forget_seam_edges_around(Vertex kept) {
+    if (m_seam_counts.empty()) return;
+    m_seam_counts[std::size_t(kept)] = kUnknown;
+    for (Halfedge h : CGAL::halfedges_around_target(kept, *m_mesh))
+      m_seam_counts[std::size_t(m_mesh->source(h))] = kUnknown;
   }
 
   static bool same_number(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
@@ -205,6 +235,11 @@ class Corner_attribute_carrier {
         const std::size_t j = index_of(mesh.face(o));
         if (j < star.size()) side[root(i)] = root(j);
       }
+    const bool solved =
+        m_solver.free_collapse_values && seam_edges_at(v0) == 0 && seam_edges_at(v1) == 0;
+    Corner_value solved_value = stored_value(profile.v0_v1());
+    if (solved)
+      m_solver.free_collapse_values(profile.v0_v1(), x, solved_value.uv, solved_value.normal);
     std::vector<Corner_value> values;
     for (std::size_t i = 0; i < star.size(); ++i) {
       Halfedge corner;
@@ -215,7 +250,24 @@ class Corner_attribute_carrier {
           ++ends;
         }
       if (ends != 1) continue;  // a face on the edge: the collapse removes it
-      values.push_back(interpolated(star, root(i), x, star[i], corner, root));
+      if (!solved) {
+        values.push_back(interpolated(star, root(i), x, star[i], corner, root));
+        continue;
+      }
+      // An attribute the solver leaves undefined (NaN) is interpolated.
+      Corner_value value = solved_value;
+      value.face = star[i];
+      value.corner = corner;
+      const bool uv_missing =
+          m_attributes.uvs && !(std::isfinite(value.uv[0]) && std::isfinite(value.uv[1]));
+      const bool normal_missing =
+          m_attributes.normals && !std::isfinite(value.normal.squared_length());
+      if (uv_missing || normal_missing) {
+        const Corner_value other = interpolated(star, root(i), x, star[i], corner, root);
+        if (uv_missing) value.uv = other.uv;
+        if (normal_missing) value.normal = other.normal;
+      }
+      values.push_back(value);
     }
     return values;
   }
@@ -272,7 +324,9 @@ class Corner_attribute_carrier {
 
   Mesh* m_mesh;
   Attributes m_attributes;
+  Solver m_solver;
   std::vector<Pending_face> m_pending;
+  mutable std::vector<std::size_t> m_seam_counts;  // kUnknown until asked
 };
 
 }  // namespace cgal_policies

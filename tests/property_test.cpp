@@ -534,8 +534,8 @@ INSTANTIATE_TEST_SUITE_P(ShippedMeshes, PinnedResults,
 // (cgal_policies/Corner_attribute_carrier.h).
 using Attributes = cgal_policies::Corner_attributes<Point>;
 
-const std::vector<std::string> kCarryingPolicies = {"gh",      "gh-prob",   "lt",
-                                                    "classic", "curvature", "fusion"};
+const std::vector<std::string> kCarryingPolicies = {"gh",        "gh-prob", "lt",        "classic",
+                                                    "curvature", "fusion",  "attributes"};
 
 // Sets every corner's texture coordinate (and normal, when asked) from the point of its vertex.
 template <class Uv_of>

@@ -1,9 +1,10 @@
-// The shared quadric core (docs/quadric_core.md), Classic_quadric_policies and
-// Bounded_normal_angle_filter, on tiny meshes with exact expectations.
+// The shared quadric core (docs/quadric_core.md), the attribute quadric (docs/attributes.md),
+// Classic_quadric_policies and Bounded_normal_angle_filter, on tiny meshes with exact expectations.
 #include "test_meshes.h"
 
 #include <cgal_policies/Bounded_normal_angle_filter.h>
 #include <cgal_policies/Classic_quadric_policies.h>
+#include <cgal_policies/internal/Attribute_quadric.h>
 #include <cgal_policies/internal/plane_quadrics.h>
 #include <cgal_policies/internal/quadric_placement.h>
 
@@ -11,6 +12,10 @@
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 
 #include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
 
 namespace {
 
@@ -50,6 +55,59 @@ TEST(Quadric, AreaWeightingMultipliesByTheFaceArea) {
       cgal_policies::internal::face_plane_quadric(f, mesh, mesh.points(), Face_weighting::area);
   EXPECT_DOUBLE_EQ(unit.evaluate({1, 1, 2}), 4.0);
   EXPECT_DOUBLE_EQ(area.evaluate({1, 1, 2}), 6.0 * 4.0);
+}
+
+// The face z = 0 with corners (0,0,0), (2,0,0), (0,2,0), weight 3, carrying two attributes:
+// s0 = x + 1 (linear) and s1 = 0.5 y, and nothing in the other slots.
+cgal_policies::internal::Attribute_quadric attribute_test_face() {
+  using cgal_policies::internal::Attribute_quadric;
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  const std::array<Eigen::Vector3d, 3> p{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(2, 0, 0),
+                                         Eigen::Vector3d(0, 2, 0)};
+  std::array<Attribute_quadric::Attributes, 3> s;
+  for (int k = 0; k < 3; ++k) s[k] << p[k].x() + 1, 0.5 * p[k].y(), none, none, none;
+  return Attribute_quadric::from_face(p, s, 3.0);
+}
+
+TEST(AttributeQuadric, IsZeroOnItsFaceWithTheFaceValues) {
+  const auto q = attribute_test_face();
+  cgal_policies::internal::Attribute_quadric::Attributes s;
+  s << 1.5, 0.25, 7, 7, 7;  // at (0.5, 0.5, 0); the last three have no term
+  EXPECT_NEAR(q.evaluate({0.5, 0.5, 0}, s), 0, 1e-12);
+}
+
+TEST(AttributeQuadric, AddsTheSquaredDistanceToThePlaneAndToEachField) {
+  const auto q = attribute_test_face();
+  cgal_policies::internal::Attribute_quadric::Attributes s;
+  s << 1.5 + 0.2, 0.25 - 0.1, 0, 0, 0;  // at (0.5, 0.5, 0.4)
+  EXPECT_NEAR(q.evaluate({0.5, 0.5, 0.4}, s), 3.0 * (0.16 + 0.04 + 0.01), 1e-12);
+}
+
+TEST(AttributeQuadric, BestAttributesAreTheFieldsAtTheProjectionAndLeaveThePlaneQuadric) {
+  const auto q = attribute_test_face();
+  const Eigen::Vector3d x(0.3, -0.7, 0.5);  // the fields are extended beyond the triangle
+  const auto best = q.best_attributes(x);
+  EXPECT_NEAR(best[0], 1.3, 1e-12);
+  EXPECT_NEAR(best[1], -0.35, 1e-12);
+  EXPECT_TRUE(std::isnan(best[2]) && std::isnan(best[3]) && std::isnan(best[4]));
+  EXPECT_NEAR(q.evaluate(x, best), 3.0 * 0.25, 1e-12);
+  EXPECT_NEAR(q.position_quadric().evaluate(x), 3.0 * 0.25, 1e-12);
+}
+
+TEST(AttributeQuadric, TwoFacesDisagreeingOnAValueAreMetHalfway) {
+  using cgal_policies::internal::Attribute_quadric;
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  const std::array<Eigen::Vector3d, 3> p{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0),
+                                         Eigen::Vector3d(0, 1, 0)};
+  std::array<Attribute_quadric::Attributes, 3> zero, two;
+  for (int k = 0; k < 3; ++k) {
+    zero[k] << 0, none, none, none, none;
+    two[k] << 2, none, none, none, none;
+  }
+  const Attribute_quadric q =
+      Attribute_quadric::from_face(p, zero, 1.0) + Attribute_quadric::from_face(p, two, 1.0);
+  EXPECT_NEAR(q.best_attributes({0.2, 0.2, 0})[0], 1.0, 1e-12);
+  EXPECT_NEAR(q.position_quadric().evaluate({0.2, 0.2, 0}), 2.0, 1e-12);  // 1^2 + 1^2
 }
 
 TEST(ClassicQuadricPolicies, EveryEdgeOfAFlatGridCostsZero) {

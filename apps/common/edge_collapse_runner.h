@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <optional>
 
 namespace apps {
@@ -121,11 +122,12 @@ class Progress_visitor
 // wrap every policy's placement and filter, and pass everything through when there is nothing to
 // carry (one instantiation of edge_collapse per policy either way).
 template <typename GetCost, typename GetPlacement, typename Filter>
-Simplify_outcome run_edge_collapse(Mesh& mesh, const Simplify_settings& settings,
-                                   const GetCost& cost, const GetPlacement& base_placement,
-                                   const Filter& base_filter,
-                                   Error_bound_keeper keeper = Error_bound_keeper::runner,
-                                   Attribute_carrying carrying = Attribute_carrying::interpolate) {
+Simplify_outcome run_edge_collapse(
+    Mesh& mesh, const Simplify_settings& settings, const GetCost& cost,
+    const GetPlacement& base_placement, const Filter& base_filter,
+    Error_bound_keeper keeper = Error_bound_keeper::runner,
+    Attribute_carrying carrying = Attribute_carrying::interpolate,
+    const std::function<void(Attribute_carrier&)>& solve_attributes = {}) {
   const Stopwatch watch;
   Attribute_carrier carrier(mesh);
   // CGAL collapses edges of zero length first, without a placement or the filter: the carrier
@@ -138,6 +140,7 @@ Simplify_outcome run_edge_collapse(Mesh& mesh, const Simplify_settings& settings
               std::none_of(mesh.edges().begin(), mesh.edges().end(), zero_length)
           ? &carrier
           : nullptr;
+  if (carried && solve_attributes) solve_attributes(*carried);
   const cgal_policies::Seam_keeping_placement<Point, GetPlacement> placement(base_placement,
                                                                              carried);
   using Filter_keeping_seams = cgal_policies::Seam_keeping_filter<Point, Filter>;

@@ -14,6 +14,7 @@ std::vector<Policy_entry> fusion_policies();         // policies_fusion.cpp: fus
 std::vector<Policy_entry> curvature_policies();      // policies_curvature.cpp: curvature
 std::vector<Policy_entry> fast_policies();           // policies_fast.cpp: fast
 std::vector<Policy_entry> hausdorff_policies();      // policies_hausdorff.cpp: hausdorff
+std::vector<Policy_entry> attribute_policies();      // policies_attributes.cpp: attributes
 
 }  // namespace apps
 

@@ -34,8 +34,9 @@ bool in_range(const Policy_option& o, double value) {
 const std::vector<Policy_entry>& policy_registry() {
   static const std::vector<Policy_entry> registry = [] {
     std::vector<Policy_entry> all;
-    for (auto&& group : {cgal_baseline_policies(), classic_policies(), curvature_policies(),
-                         fusion_policies(), fast_policies(), hausdorff_policies()})
+    for (auto&& group :
+         {cgal_baseline_policies(), classic_policies(), curvature_policies(), fusion_policies(),
+          fast_policies(), hausdorff_policies(), attribute_policies()})
       all.insert(all.end(), group.begin(), group.end());
     return all;
   }();

@@ -24,6 +24,13 @@ class Quadric {
     return q;
   }
 
+  // x^T a x + 2 b.x + c, a symmetric.
+  static Quadric from_parts(const Eigen::Matrix3d& a, const Eigen::Vector3d& b, double c) {
+    Quadric q;
+    q.m_q = {a(0, 0), a(0, 1), a(0, 2), b.x(), a(1, 1), a(1, 2), b.y(), a(2, 2), b.z(), c};
+    return q;
+  }
+
   Quadric& operator+=(const Quadric& other) {
     for (std::size_t i = 0; i < m_q.size(); ++i) m_q[i] += other.m_q[i];
     return *this;
