@@ -1,5 +1,6 @@
 // mesh_error A B: Metro-style two-sided distances between two meshes (docs/evaluation.md), A being
-// the reference, and the validity figures of B.
+// the reference, the validity figures of B and, with --attributes, the error of B's texture
+// coordinates and normals.
 #include "common/App_error.h"
 #include "common/Command_line.h"
 #include "common/Json_object.h"
@@ -15,14 +16,35 @@ namespace apps {
 namespace {
 
 void print_help() {
-  std::cout << "usage: mesh_error A B [--samples N] [--json]\n"
+  std::cout << "usage: mesh_error A B [--samples N] [--attributes] [--json]\n"
                "Two-sided distances between the surfaces of A (the reference) and B: the\n"
                "Hausdorff distance, the mean distance in each direction and the RMS, absolute\n"
                "and relative to A's bounding-box diagonal; then the validity of B.\n\n"
-               "  --samples N  random face samples per direction, fixed seed (default "
+               "  --samples N   random face samples per direction, fixed seed (default "
             << kDefaultErrorSamples
             << "); every vertex is sampled too\n"
-               "  --json       print one JSON object on stdout\n";
+               "  --attributes  also compare the corner attributes of B with A's (OBJ files):\n"
+               "                texture coordinates relative to A's texture extent, normal\n"
+               "                angles, seams and flipped texture triangles; each figure only\n"
+               "                when both files have what it compares (docs/evaluation.md)\n"
+               "  --json        print one JSON object on stdout\n";
+}
+
+void print_attribute_error(const Attribute_error& e) {
+  if (e.uv_mean_rel)
+    std::printf("texture coordinates: mean %.5f%%, max %.5f%% of A's texture extent\n",
+                100 * *e.uv_mean_rel, 100 * *e.uv_max_rel);
+  else
+    std::printf("texture coordinates: not in both meshes\n");
+  if (e.flipped_uv_faces) std::printf("flipped texture triangles of B: %zu\n", *e.flipped_uv_faces);
+  if (e.normal_angle_mean_deg)
+    std::printf("normals: mean %.4f deg, max %.4f deg\n", *e.normal_angle_mean_deg,
+                *e.normal_angle_max_deg);
+  else
+    std::printf("normals: not in both meshes\n");
+  if (e.seam_edges_a)
+    std::printf("seam edges / connected seams: A %zu / %zu, B %zu / %zu\n", *e.seam_edges_a,
+                *e.seam_loops_a, *e.seam_edges_b, *e.seam_loops_b);
 }
 
 int run(int argc, char** argv) {
@@ -33,19 +55,26 @@ int run(int argc, char** argv) {
   }
   const double samples = cli.take_number("samples").value_or(double(kDefaultErrorSamples));
   const bool json = cli.take_flag("json");
+  const bool attributes = cli.take_flag("attributes");
   const std::vector<std::string> args = cli.positionals();
-  if (args.size() != 2) throw App_error(exit_usage, "usage: mesh_error A B [--samples N] [--json]");
+  if (args.size() != 2)
+    throw App_error(exit_usage, "usage: mesh_error A B [--samples N] [--attributes] [--json]");
   if (!(samples >= 1 && samples == std::floor(samples)))
     throw App_error(exit_usage, "--samples must be a whole number of at least 1");
 
-  const Mesh a = read_triangle_mesh(args[0]);
-  const Mesh b = read_triangle_mesh(args[1]);
+  const Corner_attribute_reading reading =
+      attributes ? Corner_attribute_reading::keep : Corner_attribute_reading::drop;
+  const Mesh a = read_triangle_mesh(args[0], nullptr, reading);
+  const Mesh b = read_triangle_mesh(args[1], nullptr, reading);
   const Mesh_error error = measure_mesh_error(a, b, std::size_t(samples));
   const Mesh_validity validity = check_mesh_validity(b);
+  const Attribute_error attribute_error =
+      attributes ? measure_attribute_error(a, b, std::size_t(samples)) : Attribute_error();
   if (json) {
     Json_object report;
     add_fields(report, error);
     add_fields(report, validity);
+    add_fields(report, attribute_error);
     std::cout << report.str() << '\n';
     return exit_success;
   }
@@ -64,6 +93,7 @@ int run(int argc, char** argv) {
       validity.valid ? "valid" : "INVALID", validity.closed ? "closed" : "open", validity.faces,
       validity.boundary_edges, validity.non_manifold_vertices, validity.degenerate_faces,
       validity.min_angle_deg);
+  if (attributes) print_attribute_error(attribute_error);
   return exit_success;
 }
 

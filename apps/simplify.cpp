@@ -57,7 +57,8 @@ void print_help() {
          "                        it is met; never the largest\n"
       << smoothing_help() << fit_help()
       << "  --json                print one JSON object on stdout\n"
-         "  --measure             also measure the two-sided error against IN\n"
+         "  --measure             also measure the two-sided error against IN, and the\n"
+         "                        error of the carried texture coordinates and normals\n"
          "  --samples N           face samples per direction for --measure (default "
       << kDefaultErrorSamples
       << ")\n"
@@ -257,9 +258,13 @@ int run(int argc, char** argv) {
   for (const auto& [name, value] : settings.options) report.add("option_" + name, value);
   Mesh_error error;
   if (measure) {
-    error = measure_mesh_error(original, mesh, request.samples.value_or(kDefaultErrorSamples));
+    const std::size_t samples = request.samples.value_or(kDefaultErrorSamples);
+    error = measure_mesh_error(original, mesh, samples);
     add_fields(report, error);
     add_fields(report, check_mesh_validity(mesh));
+    // IN keeps its corner attributes only for an OBJ OUT; a dropping run leaves none to compare.
+    if (input_had_corner_values)
+      add_fields(report, measure_attribute_error(original, mesh, samples));
   }
 
   if (request.json) {

@@ -253,12 +253,38 @@ TEST_F(Cli, MeshErrorBetweenAFileAndItselfIsZero) {
   EXPECT_EQ(run("mesh_error", in.string() + " " + file("missing.off").string()).exit_code, 3);
 }
 
-// A number field of simplify's JSON object; NaN when missing.
+// A number field of an app's JSON object; NaN when missing.
 double json_number(const std::string& json, const std::string& field) {
   std::smatch match;
   if (!std::regex_search(json, match, std::regex("\"" + field + "\": ([-+.e0-9]+)")))
     return std::nan("");
   return std::stod(match[1]);
+}
+
+TEST_F(Cli, MeshErrorComparesCornerAttributesWhenAsked) {
+  const std::string spot = test_meshes::data_file("spot.obj");
+  const Command_result same =
+      run("mesh_error", spot + " " + spot + " --attributes --json --samples 20000");
+  ASSERT_EQ(same.exit_code, 0) << same.err;
+  EXPECT_LE(json_number(same.out, "uv_mean_rel"), 1e-12) << same.out;
+  EXPECT_LE(json_number(same.out, "uv_max_rel"), 1e-12) << same.out;
+  EXPECT_EQ(json_number(same.out, "flipped_uv_faces"), 0) << same.out;
+  EXPECT_EQ(json_number(same.out, "seam_edges_a"), 288) << same.out;
+  EXPECT_EQ(json_number(same.out, "seam_edges_b"), 288) << same.out;
+  EXPECT_EQ(json_number(same.out, "seam_loops_a"), 1) << same.out;
+  EXPECT_EQ(json_number(same.out, "seam_loops_b"), 1) << same.out;
+  EXPECT_EQ(same.out.find("normal_angle"), std::string::npos) << same.out;  // spot has no normals
+  // Not asked, or nothing to compare: no attribute field.
+  const Command_result plain = run("mesh_error", spot + " " + spot + " --json --samples 1000");
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  const fs::path tet = write("tet.off", kTetrahedronOff);
+  const Command_result bare =
+      run("mesh_error", tet.string() + " " + tet.string() + " --attributes --json --samples 1000");
+  ASSERT_EQ(bare.exit_code, 0) << bare.err;
+  for (const Command_result* r : {&plain, &bare})
+    for (const char* field : {"\"uv_", "\"normal_angle", "\"seam_", "\"flipped_uv_faces\""})
+      EXPECT_EQ(r->out.find(field), std::string::npos) << field << " in " << r->out;
+  EXPECT_NE(bare.out.find("\"valid\": true"), std::string::npos) << bare.out;
 }
 
 TEST_F(Cli, ASnapshotThatCannotBeWrittenLeavesNoMeshEither) {
@@ -1224,9 +1250,17 @@ TEST_F(Cli, SimplifyCarriesTextureCoordinatesIntoAnObjOrSaysItDropsThem) {
   const fs::path out = file("out.obj");
 
   const Command_result carried =
-      run("simplify", input.string() + " " + out.string() + " --faces 8 --policy gh --json");
+      run("simplify", input.string() + " " + out.string() +
+                          " --faces 8 --policy gh --json --measure --samples 2000");
   ASSERT_EQ(carried.exit_code, 0) << carried.err;
   EXPECT_NE(carried.out.find("\"attributes\": \"carried\""), std::string::npos) << carried.out;
+  // The field is linear and the grid flat: the carried coordinates are right everywhere, and the
+  // only seam is the border, in and out.
+  EXPECT_LE(json_number(carried.out, "uv_max_rel"), 1e-12) << carried.out;
+  EXPECT_EQ(json_number(carried.out, "flipped_uv_faces"), 0) << carried.out;
+  EXPECT_EQ(json_number(carried.out, "seam_edges_a"), 24) << carried.out;
+  EXPECT_EQ(json_number(carried.out, "seam_loops_a"), 1) << carried.out;
+  EXPECT_EQ(json_number(carried.out, "seam_loops_b"), 1) << carried.out;
   const Mesh simplified =
       apps::read_triangle_mesh(out.string(), nullptr, apps::Corner_attribute_reading::keep);
   EXPECT_LE(simplified.number_of_faces(), 8u);
@@ -1239,10 +1273,13 @@ TEST_F(Cli, SimplifyCarriesTextureCoordinatesIntoAnObjOrSaysItDropsThem) {
     EXPECT_NEAR((*kept.uvs)[h][1], p.y() / 6, 1e-12);
   }
 
-  const Command_result dropped = run(
-      "simplify", input.string() + " " + out.string() + " --faces 8 --policy fast --json --force");
+  const Command_result dropped =
+      run("simplify", input.string() + " " + out.string() +
+                          " --faces 8 --policy fast --json --force --measure --samples 2000");
   ASSERT_EQ(dropped.exit_code, 0) << dropped.err;
   EXPECT_NE(dropped.out.find("\"attributes\": \"dropped\""), std::string::npos) << dropped.out;
+  EXPECT_EQ(dropped.out.find("\"uv_"), std::string::npos) << dropped.out;  // nothing to compare
+  EXPECT_EQ(dropped.out.find("\"seam_"), std::string::npos) << dropped.out;
   EXPECT_NE(
       dropped.err.find("texture coordinates and normals dropped (the fast policy cannot carry"),
       std::string::npos)

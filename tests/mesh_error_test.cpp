@@ -1,4 +1,5 @@
-// The two-sided Metro-style evaluator behind mesh_error (docs/evaluation.md).
+// The two-sided Metro-style evaluator behind mesh_error (docs/evaluation.md), and its comparison of
+// corner attributes (mesh_error --attributes).
 #include "test_meshes.h"
 
 #include "common/mesh_io.h"
@@ -11,7 +12,11 @@
 #include <CGAL/Polygon_mesh_processing/transform.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 
+#include <cgal_policies/Corner_attributes.h>
+
 #include <gtest/gtest.h>
+
+#include <utility>
 
 namespace {
 
@@ -130,6 +135,169 @@ TEST(MeshError, AgreesWithCgalsCertifiedHausdorffDistanceOnTheBunny) {
   EXPECT_NEAR(e.hausdorff_b_to_a, certified_ba, 0.05 * certified_ba);
   EXPECT_LE(e.hausdorff_a_to_b, certified_ab + bound);
   EXPECT_LE(e.hausdorff_b_to_a, certified_ba + bound);
+}
+
+TEST(MeshError, FaceSamplesKnowTheirFaceAndWeights) {
+  const Mesh sphere = loop_sphere(2);
+  const std::vector<apps::Face_sample> samples = apps::sample_face_points(sphere, 1000);
+  const std::vector<Point> points = apps::sample_faces(sphere, 1000);
+  ASSERT_EQ(samples.size(), 1000u);
+  ASSERT_EQ(points.size(), 1000u);
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const apps::Face_sample& s = samples[i];
+    EXPECT_EQ(s.point, points[i]);
+    const auto h = halfedge(s.face, sphere);
+    const Point& p = sphere.point(target(h, sphere));
+    const Point& q = sphere.point(target(next(h, sphere), sphere));
+    const Point& r = sphere.point(target(prev(h, sphere), sphere));
+    for (double w : s.weights) EXPECT_GE(w, 0);
+    EXPECT_NEAR(s.weights[0] + s.weights[1] + s.weights[2], 1, 1e-15);
+    EXPECT_EQ(s.point, Point(p.x() * s.weights[0] + q.x() * s.weights[1] + r.x() * s.weights[2],
+                             p.y() * s.weights[0] + q.y() * s.weights[1] + r.y() * s.weights[2],
+                             p.z() * s.weights[0] + q.z() * s.weights[1] + r.z() * s.weights[2]));
+  }
+}
+
+// mesh_error --attributes on tiny meshes whose every figure is known.
+using Attributes = cgal_policies::Corner_attributes<Point>;
+constexpr std::size_t kAttributeSamples = 20000;
+
+// flat_grid(4) with texture coordinates (x, y) / 4, whose extent is sqrt(2); normals +z when
+// asked.
+Mesh textured_plane(bool with_normals) {
+  Mesh mesh = flat_grid(4);
+  paint_corners(
+      mesh,
+      [](Mesh::Face_index, const Point& p) {
+        return std::array<double, 2>{p.x() / 4, p.y() / 4};
+      },
+      with_normals);
+  return mesh;
+}
+
+TEST(AttributeError, ATexturedPlaneAgainstItselfHasNone) {
+  const Mesh plane = textured_plane(true);
+  const apps::Attribute_error e = apps::measure_attribute_error(plane, plane, kAttributeSamples);
+  ASSERT_TRUE(e.uv_mean_rel && e.uv_max_rel && e.normal_angle_mean_deg && e.flipped_uv_faces);
+  // Zero up to the round-off of the closest point's weights.
+  EXPECT_LE(*e.uv_mean_rel, 1e-15);
+  EXPECT_LE(*e.uv_max_rel, 1e-15);
+  EXPECT_EQ(*e.normal_angle_mean_deg, 0);
+  EXPECT_EQ(*e.normal_angle_max_deg, 0);
+  EXPECT_EQ(*e.flipped_uv_faces, 0u);
+  // No seam inside: the 16 border edges, one loop.
+  EXPECT_EQ(e.seam_edges_a, 16u);
+  EXPECT_EQ(e.seam_edges_b, 16u);
+  EXPECT_EQ(e.seam_loops_a, 1u);
+  EXPECT_EQ(e.seam_loops_b, 1u);
+}
+
+TEST(AttributeError, ShiftedTextureCoordinatesAreOffByTheShiftOverTheExtent) {
+  const Mesh a = textured_plane(false);
+  Mesh b = a;
+  const Attributes shifted(b);
+  for (auto h : halfedges(b))
+    if (!b.is_border(h)) (*shifted.uvs)[h][0] += 0.1;
+  const apps::Attribute_error e = apps::measure_attribute_error(a, b, kAttributeSamples);
+  ASSERT_TRUE(e.uv_mean_rel && e.uv_max_rel);
+  EXPECT_NEAR(*e.uv_mean_rel, 0.1 / std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(*e.uv_max_rel, 0.1 / std::sqrt(2.0), 1e-9);
+  EXPECT_EQ(e.flipped_uv_faces, 0u);
+  EXPECT_FALSE(e.normal_angle_mean_deg);  // neither has normals
+  EXPECT_EQ(e.seam_loops_b, 1u);
+}
+
+TEST(AttributeError, NormalsTurnedByThirtyDegrees) {
+  const Mesh a = textured_plane(true);
+  Mesh b = a;
+  const double angle = 30 * M_PI / 180;
+  const Attributes turned(b);
+  for (auto h : halfedges(b))
+    if (!b.is_border(h))
+      (*turned.normals)[h] = Kernel::Vector_3(std::sin(angle), 0, std::cos(angle));
+  const apps::Attribute_error e = apps::measure_attribute_error(a, b, kAttributeSamples);
+  ASSERT_TRUE(e.normal_angle_mean_deg && e.normal_angle_max_deg && e.uv_max_rel);
+  EXPECT_NEAR(*e.normal_angle_mean_deg, 30, 1e-9);
+  EXPECT_NEAR(*e.normal_angle_max_deg, 30, 1e-9);
+  EXPECT_LE(*e.uv_max_rel, 1e-15);
+}
+
+TEST(AttributeError, AMirroredTextureTriangleIsOneFlippedFaceInsideASeamLoop) {
+  const Mesh a = textured_plane(false);
+  Mesh b = a;
+  // The face (1, 1) -> (2, 1) -> (2, 2), inside the grid, with the texture coordinates of its
+  // corners at (2, 1) and (2, 2) swapped: it turns clockwise in the texture.
+  const auto h = halfedge_between(b, Point(1, 1, 0), Point(2, 1, 0));
+  const Attributes mirrored(b);
+  std::swap((*mirrored.uvs)[h], (*mirrored.uvs)[next(h, b)]);
+  ASSERT_GT(uv_area(a, face(h, a)), 0);
+  ASSERT_LT(uv_area(b, face(h, b)), 0);
+  const apps::Attribute_error e = apps::measure_attribute_error(a, b, kAttributeSamples);
+  ASSERT_TRUE(e.uv_max_rel);
+  EXPECT_EQ(e.flipped_uv_faces, 1u);
+  // Its three edges disagree with their neighbours: a second seam loop besides the border.
+  EXPECT_EQ(e.seam_edges_a, 16u);
+  EXPECT_EQ(e.seam_edges_b, 19u);
+  EXPECT_EQ(e.seam_loops_a, 1u);
+  EXPECT_EQ(e.seam_loops_b, 2u);
+  EXPECT_GT(*e.uv_max_rel, 0.1);
+}
+
+TEST(AttributeError, SeamsOfCubesWithSixAndWithThreeCharts) {
+  // Six charts, one per side: each of the 12 cube edges is a seam of 4 grid edges, and they all
+  // meet at the cube's corners: 48 seam edges, one component.
+  Mesh six = six_sided_cube();
+  paint_corners(
+      six, [&](Mesh::Face_index f, const Point& p) { return cube_chart(cube_side(six, f), p); },
+      false);
+  const apps::Attribute_error e = apps::measure_attribute_error(six, six, kAttributeSamples);
+  EXPECT_EQ(e.seam_edges_a, 48u);
+  EXPECT_EQ(e.seam_loops_a, 1u);
+  EXPECT_EQ(e.seam_edges_b, 48u);
+  EXPECT_EQ(e.seam_loops_b, 1u);
+  EXPECT_EQ(e.flipped_uv_faces, 0u);
+  ASSERT_TRUE(e.uv_max_rel);
+  EXPECT_LE(*e.uv_max_rel, 1e-15);
+  // The four upright sides one chart, (x, y), top and bottom each their own, shifted away: two
+  // rings of 4 cube edges, 16 grid edges each, that do not touch.
+  Mesh three = six_sided_cube();
+  paint_corners(
+      three,
+      [&](Mesh::Face_index f, const Point& p) {
+        const int side = cube_side(three, f);
+        return std::array<double, 2>{p.x() + (side == 0 ? 10 : side == 1 ? 20 : 0), p.y()};
+      },
+      false);
+  const apps::Attribute_error rings = apps::measure_attribute_error(three, three, 100);
+  EXPECT_EQ(rings.seam_edges_a, 32u);
+  EXPECT_EQ(rings.seam_loops_a, 2u);
+}
+
+TEST(AttributeError, OnlyWhatBothMeshesHaveIsCompared) {
+  const Mesh textured = textured_plane(false), bare = flat_grid(4);
+  Mesh with_normals = flat_grid(4);
+  const Attributes normals = Attributes::add(with_normals, false, true, false);
+  for (auto h : halfedges(with_normals))
+    if (!with_normals.is_border(h)) (*normals.normals)[h] = Kernel::Vector_3(0, 0, 1);
+
+  const apps::Attribute_error none = apps::measure_attribute_error(textured, bare, 100);
+  EXPECT_FALSE(none.uv_mean_rel || none.uv_max_rel || none.flipped_uv_faces ||
+               none.normal_angle_mean_deg || none.normal_angle_max_deg || none.seam_edges_a ||
+               none.seam_edges_b || none.seam_loops_a || none.seam_loops_b);
+  apps::Json_object json;
+  apps::add_fields(json, none);
+  EXPECT_EQ(json.str(), "{}");
+
+  // Normals alone on both sides: their angle and the seams, no texture figure.
+  const apps::Attribute_error normal_only =
+      apps::measure_attribute_error(with_normals, with_normals, 100);
+  EXPECT_FALSE(normal_only.uv_mean_rel || normal_only.uv_max_rel || normal_only.flipped_uv_faces);
+  EXPECT_EQ(normal_only.normal_angle_max_deg, 0.0);
+  EXPECT_EQ(normal_only.seam_edges_a, 16u);
+  // Texture coordinates against normals: nothing in common, seams judged on different values.
+  const apps::Attribute_error different =
+      apps::measure_attribute_error(textured, with_normals, 100);
+  EXPECT_FALSE(different.uv_mean_rel || different.normal_angle_mean_deg || different.seam_edges_a);
 }
 
 TEST(MeshValidity, CountsBordersAndTopology) {

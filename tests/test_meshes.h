@@ -3,9 +3,13 @@
 #ifndef CGAL_POLICIES_TESTS_TEST_MESHES_H
 #define CGAL_POLICIES_TESTS_TEST_MESHES_H
 
+#include <cgal_policies/Corner_attribute_carrier.h>
+#include <cgal_policies/Corner_attributes.h>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
 #include <CGAL/Surface_mesh.h>
@@ -20,6 +24,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -91,6 +96,87 @@ inline Mesh loop_sphere(int levels) {
     mesh.point(v) = Point(p.x() / r, p.y() / r, p.z() / r);
   }
   return mesh;
+}
+
+// A cube of side 4 with a 4 x 4 grid on each of its six sides (192 triangles, closed), side k
+// made of the points on_side(k, s, t) below, facing out.
+inline Mesh six_sided_cube() {
+  std::vector<Point> points;
+  std::vector<std::array<int, 3>> triangles;
+  std::map<std::array<int, 3>, int> index;
+  const auto point_index = [&](int x, int y, int z) {
+    const auto [it, added] = index.emplace(std::array<int, 3>{x, y, z}, int(points.size()));
+    if (added) points.emplace_back(x, y, z);
+    return it->second;
+  };
+  // Side k: the point at (s, t) of the side, outward orientation.
+  const auto on_side = [](int k, int s, int t) -> std::array<int, 3> {
+    switch (k) {
+      case 0:
+        return {t, s, 0};
+      case 1:
+        return {s, t, 4};
+      case 2:
+        return {s, 0, t};
+      case 3:
+        return {t, 4, s};
+      case 4:
+        return {0, t, s};
+      default:
+        return {4, s, t};
+    }
+  };
+  for (int k = 0; k < 6; ++k)
+    for (int s = 0; s < 4; ++s)
+      for (int t = 0; t < 4; ++t) {
+        const auto corner = [&](int ds, int dt) {
+          const auto q = on_side(k, s + ds, t + dt);
+          return point_index(q[0], q[1], q[2]);
+        };
+        triangles.push_back({corner(0, 0), corner(1, 0), corner(1, 1)});
+        triangles.push_back({corner(0, 0), corner(1, 1), corner(0, 1)});
+      }
+  return from_triangles(points, triangles);
+}
+
+// The side of six_sided_cube() a face lies on, from its normal: 0 bottom (z = 0), 1 top, 2 front
+// (y = 0), 3 back, 4 left (x = 0), 5 right.
+inline int cube_side(const Mesh& mesh, Mesh::Face_index f) {
+  const auto n = CGAL::Polygon_mesh_processing::compute_face_normal(f, mesh);
+  if (n.z() < -0.5) return 0;
+  if (n.z() > 0.5) return 1;
+  if (n.y() < -0.5) return 2;
+  if (n.y() > 0.5) return 3;
+  return n.x() < -0.5 ? 4 : 5;
+}
+
+// The texture chart of side k of six_sided_cube(): [k, k + 1] x [0, 1], each side turning
+// counterclockwise in it, so that every cube edge is a seam.
+inline std::array<double, 2> cube_chart(int k, const Point& p) {
+  const std::array<double, 6> s{p.y(), p.x(), p.x(), p.z(), p.z(), p.y()};
+  const std::array<double, 6> t{p.x(), p.y(), p.z(), p.x(), p.y(), p.z()};
+  return {k + s[k] / 4, t[k] / 4};
+}
+
+// Sets every corner's texture coordinate from its face and the point of its vertex (and its
+// normal to +z, when asked).
+template <class Uv_of>
+void paint_corners(Mesh& mesh, const Uv_of& uv_of, bool with_normals) {
+  const auto attributes =
+      cgal_policies::Corner_attributes<Point>::add(mesh, true, with_normals, false);
+  for (auto h : halfedges(mesh)) {
+    if (mesh.is_border(h)) continue;
+    (*attributes.uvs)[h] = uv_of(face(h, mesh), mesh.point(target(h, mesh)));
+    if (with_normals) (*attributes.normals)[h] = Kernel::Vector_3(0, 0, 1);
+  }
+}
+
+// Twice the signed area of a face's texture triangle.
+inline double uv_area(const Mesh& mesh, Mesh::Face_index f) {
+  const cgal_policies::Corner_attributes<Point> attributes(mesh);
+  const auto h = halfedge(f, mesh);
+  return cgal_policies::Corner_attribute_carrier<Point>::uv_area(
+      (*attributes.uvs)[h], (*attributes.uvs)[next(h, mesh)], (*attributes.uvs)[prev(h, mesh)]);
 }
 
 using Profile = CGAL::Surface_mesh_simplification::Edge_profile<

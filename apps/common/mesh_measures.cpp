@@ -1,10 +1,14 @@
 #include "mesh_measures.h"
 
+#include <cgal_policies/Corner_attribute_carrier.h>
+#include <cgal_policies/Corner_attributes.h>
+#include <cgal_policies/internal/triangle_closest_point.h>
+
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
+#include <CGAL/Random.h>
 #include <CGAL/boost/graph/helpers.h>
-#include <CGAL/point_generators_3.h>
 
 #include <algorithm>
 #include <cmath>
@@ -27,21 +31,28 @@ struct One_sided {
   double sum_of_squares = 0;  // over the face samples
 };
 
-// Squared distances from points to the surface in the tree, computed on every core; each slot is
-// written by one thread, so the result does not depend on the schedule.
-std::vector<double> squared_distances(const std::vector<Point>& points, const Face_tree& tree) {
-  std::vector<double> result(points.size());
+// Runs body(i) for every i < n on every core. Each i belongs to one thread, so a body that writes
+// slot i alone gives a result that does not depend on the schedule.
+template <class Body>
+void for_each_index_in_parallel(std::size_t n, const Body& body) {
   const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-  const std::size_t chunk = (points.size() + threads - 1) / threads;
+  const std::size_t chunk = (n + threads - 1) / threads;
   std::vector<std::thread> workers;
   for (unsigned t = 0; t < threads; ++t) {
-    const std::size_t begin = t * chunk, end = std::min(points.size(), begin + chunk);
+    const std::size_t begin = t * chunk, end = std::min(n, begin + chunk);
     if (begin >= end) break;
-    workers.emplace_back([&, begin, end] {
-      for (std::size_t i = begin; i < end; ++i) result[i] = tree.squared_distance(points[i]);
+    workers.emplace_back([&body, begin, end] {
+      for (std::size_t i = begin; i < end; ++i) body(i);
     });
   }
   for (std::thread& w : workers) w.join();
+}
+
+// Squared distances from points to the surface in the tree, computed on every core.
+std::vector<double> squared_distances(const std::vector<Point>& points, const Face_tree& tree) {
+  std::vector<double> result(points.size());
+  for_each_index_in_parallel(points.size(),
+                             [&](std::size_t i) { result[i] = tree.squared_distance(points[i]); });
   return result;
 }
 
@@ -113,16 +124,52 @@ double corner_angle_deg(const Point& a, const Point& b, const Point& c) {
 
 }  // namespace
 
-std::vector<Point> sample_faces(const Mesh& mesh, std::size_t samples) {
-  // CGAL 5.5's triangle-mesh point generator (behind sample_triangle_mesh) picks a face with the
-  // generator it is given but the point inside the face with CGAL's default generator, so that is
-  // the one seeded here.
-  std::vector<Point> points;
-  points.reserve(samples);
+std::vector<Face_sample> sample_face_points(const Mesh& mesh, std::size_t samples) {
+  // The draws of CGAL 5.5's Random_points_in_triangle_mesh_3, which gave the points before the
+  // faces were needed, in its order and arithmetic, so that every measure keeps its samples: a
+  // face by area, then two numbers in [0, 1) for the point inside it. That generator drew from
+  // CGAL's default generator, so that is the one seeded here.
+  std::vector<Mesh::Face_index> ids;
+  std::vector<double> cumulative_area;
+  double area = 0;
+  for (Mesh::Face_index f : faces(mesh)) {
+    const auto h = halfedge(f, mesh);
+    area += std::sqrt(Kernel::Compute_squared_area_3()(
+        Kernel::Triangle_3(mesh.point(target(h, mesh)), mesh.point(target(next(h, mesh), mesh)),
+                           mesh.point(source(h, mesh)))));
+    ids.push_back(f);
+    cumulative_area.push_back(area);
+  }
+  std::vector<Face_sample> result;
+  if (!(area > 0)) return result;
+  result.reserve(samples);
   CGAL::Random& random = CGAL::get_default_random();
   random = CGAL::Random(kSamplingSeed);
-  std::copy_n(CGAL::Random_points_in_triangle_mesh_3<Mesh>(mesh, random), samples,
-              std::back_inserter(points));
+  for (std::size_t i = 0; i < samples; ++i) {
+    const double at = random.get_double(0, area);
+    const std::size_t k = std::min<std::size_t>(
+        ids.size() - 1, std::upper_bound(cumulative_area.begin(), cumulative_area.end(), at) -
+                            cumulative_area.begin());
+    double a1 = random.get_double(0, 1), a2 = random.get_double(0, 1);
+    if (a1 > a2) std::swap(a1, a2);
+    const std::array<double, 3> w{a1, a2 - a1, 1.0 - a2};
+    const auto h = halfedge(ids[k], mesh);
+    const Point& p = mesh.point(target(h, mesh));
+    const Point& q = mesh.point(target(next(h, mesh), mesh));
+    const Point& r = mesh.point(source(h, mesh));
+    result.push_back({ids[k], w,
+                      Point(p.x() * w[0] + q.x() * w[1] + r.x() * w[2],
+                            p.y() * w[0] + q.y() * w[1] + r.y() * w[2],
+                            p.z() * w[0] + q.z() * w[1] + r.z() * w[2])});
+  }
+  return result;
+}
+
+std::vector<Point> sample_faces(const Mesh& mesh, std::size_t samples) {
+  const std::vector<Face_sample> sampled = sample_face_points(mesh, samples);
+  std::vector<Point> points;
+  points.reserve(sampled.size());
+  for (const Face_sample& s : sampled) points.push_back(s.point);
   return points;
 }
 
@@ -146,6 +193,182 @@ Mesh_error measure_mesh_error(const Mesh& a, const Mesh& b, std::size_t samples)
   error.rms =
       samples ? std::sqrt((ab.sum_of_squares + ba.sum_of_squares) / double(2 * samples)) : 0;
   error.samples = samples;
+  return error;
+}
+
+namespace {
+
+using Attributes = cgal_policies::Corner_attributes<Point>;
+using Carrier = cgal_policies::Corner_attribute_carrier<Point>;
+using Uv = Attributes::Uv;
+using Vector = Kernel::Vector_3;
+constexpr double kNone = Attributes::kNone;
+
+// A face's corners in the order of Face_sample::weights.
+std::array<Mesh::Halfedge_index, 3> corners_of(Mesh::Face_index f, const Mesh& mesh) {
+  const auto h = halfedge(f, mesh);
+  return {h, next(h, mesh), prev(h, mesh)};
+}
+
+// The weights of the point of face f closest to p.
+std::array<double, 3> closest_weights(const Point& p, Mesh::Face_index f, const Mesh& mesh) {
+  const auto eigen = [&](Mesh::Halfedge_index h) {
+    const Point& q = mesh.point(target(h, mesh));
+    return Eigen::Vector3d(q.x(), q.y(), q.z());
+  };
+  const auto c = corners_of(f, mesh);
+  const Eigen::Vector3d w = cgal_policies::internal::closest_barycentric(
+      Eigen::Vector3d(p.x(), p.y(), p.z()), eigen(c[0]), eigen(c[1]), eigen(c[2]));
+  return {w[0], w[1], w[2]};
+}
+
+Uv interpolated_uv(const Attributes::Uv_map& uvs, const std::array<Mesh::Halfedge_index, 3>& c,
+                   const std::array<double, 3>& w) {
+  Uv uv{0, 0};
+  for (int k = 0; k < 3; ++k)
+    for (int d = 0; d < 2; ++d) uv[d] += w[k] * uvs[c[k]][d];
+  return uv;
+}
+
+// Normalised; NaN where the corners hold no normal or cancel out.
+Vector interpolated_normal(const Attributes::Normal_map& normals,
+                           const std::array<Mesh::Halfedge_index, 3>& c,
+                           const std::array<double, 3>& w) {
+  const Vector sum = w[0] * normals[c[0]] + w[1] * normals[c[1]] + w[2] * normals[c[2]];
+  const double length = std::sqrt(sum.squared_length());
+  return length > 0 ? sum / length : Vector(kNone, kNone, kNone);
+}
+
+double face_uv_area(const Mesh& mesh, const Attributes::Uv_map& uvs, Mesh::Face_index f) {
+  const auto c = corners_of(f, mesh);
+  return Carrier::uv_area(uvs[c[0]], uvs[c[1]], uvs[c[2]]);
+}
+
+// The diagonal of the bounding box of the mesh's texture coordinates.
+double uv_extent(const Mesh& mesh, const Attributes::Uv_map& uvs) {
+  std::array<double, 2> low{kNone, kNone}, high{kNone, kNone};
+  for (auto h : halfedges(mesh)) {
+    if (mesh.is_border(h) || !std::isfinite(uvs[h][0]) || !std::isfinite(uvs[h][1])) continue;
+    for (int d = 0; d < 2; ++d) {
+      low[d] = std::fmin(low[d], uvs[h][d]);  // fmin and fmax skip the NaN they start from
+      high[d] = std::fmax(high[d], uvs[h][d]);
+    }
+  }
+  return std::hypot(high[0] - low[0], high[1] - low[1]);
+}
+
+// The mean and the maximum of the finite values, none when there is none.
+void summarise(const std::vector<double>& values, std::optional<double>& mean,
+               std::optional<double>& maximum) {
+  double sum = 0, largest = 0;
+  std::size_t count = 0;
+  for (double v : values) {
+    if (!std::isfinite(v)) continue;
+    sum += v;
+    largest = std::max(largest, v);
+    ++count;
+  }
+  if (count == 0) return;
+  mean = sum / double(count);
+  maximum = largest;
+}
+
+struct Seams {
+  std::size_t edges = 0, loops = 0;
+};
+
+// Seam edges by the carrier's own rule, and their connected components.
+Seams count_seams(const Mesh& mesh) {
+  Mesh copy = mesh;  // the carrier takes a mesh it may change; here it only reads
+  const Carrier carrier(copy);
+  std::vector<std::size_t> parent(copy.num_vertices());
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  const auto root = [&](std::size_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  std::vector<bool> on_seam(parent.size(), false);
+  Seams seams;
+  for (auto e : edges(copy)) {
+    const auto h = halfedge(e, copy);
+    if (!carrier.is_seam_edge(h)) continue;
+    ++seams.edges;
+    const std::size_t s = source(h, copy), t = target(h, copy);
+    on_seam[s] = on_seam[t] = true;
+    parent[root(s)] = root(t);
+  }
+  for (std::size_t v = 0; v < parent.size(); ++v) seams.loops += on_seam[v] && root(v) == v;
+  return seams;
+}
+
+int sign(double x) { return (x > 0) - (x < 0); }
+
+// B's faces whose texture triangle does not turn the way that of the A face nearest the B face's
+// centroid does (a flat B triangle against a turning A one counts; a flat A one, or a corner
+// without a value, is not judged).
+std::size_t flipped_uv_faces(const Mesh& a, const Attributes::Uv_map& uv_a, const Mesh& b,
+                             const Attributes::Uv_map& uv_b) {
+  Face_tree tree(faces(a).first, faces(a).second, a);
+  tree.accelerate_distance_queries();
+  const std::vector<Mesh::Face_index> b_faces(faces(b).begin(), faces(b).end());
+  std::vector<char> flipped(b_faces.size(), 0);
+  for_each_index_in_parallel(b_faces.size(), [&](std::size_t i) {
+    const auto c = corners_of(b_faces[i], b);
+    const Point centroid = CGAL::centroid(b.point(target(c[0], b)), b.point(target(c[1], b)),
+                                          b.point(target(c[2], b)));
+    const double area_a = face_uv_area(a, uv_a, tree.closest_point_and_primitive(centroid).second);
+    const double area_b = face_uv_area(b, uv_b, b_faces[i]);
+    if (!std::isfinite(area_a) || !std::isfinite(area_b) || area_a == 0) return;
+    flipped[i] = sign(area_b) != sign(area_a);
+  });
+  return std::size_t(std::count(flipped.begin(), flipped.end(), 1));
+}
+
+}  // namespace
+
+Attribute_error measure_attribute_error(const Mesh& a, const Mesh& b, std::size_t samples) {
+  const Attributes in_a(a), in_b(b);
+  Attribute_error error;
+  // Seams are judged on every corner value a mesh has, so they compare only like with like.
+  if (in_a.any_corner_values() && in_a.uvs.has_value() == in_b.uvs.has_value() &&
+      in_a.normals.has_value() == in_b.normals.has_value()) {
+    const Seams seams_a = count_seams(a), seams_b = count_seams(b);
+    error.seam_edges_a = seams_a.edges;
+    error.seam_edges_b = seams_b.edges;
+    error.seam_loops_a = seams_a.loops;
+    error.seam_loops_b = seams_b.loops;
+  }
+  const double extent = in_a.uvs ? uv_extent(a, *in_a.uvs) : 0;
+  const bool uvs = in_a.uvs && in_b.uvs && extent > 0, normals = in_a.normals && in_b.normals;
+  if (uvs) error.flipped_uv_faces = flipped_uv_faces(a, *in_a.uvs, b, *in_b.uvs);
+  if (!uvs && !normals) return error;
+
+  // At each sample of A and the closest point of B: each side's interpolated value. A closest
+  // point on a seam of B takes the values of the face the tree gives, whichever chart it is in.
+  const std::vector<Face_sample> points = sample_face_points(a, samples);
+  Face_tree tree(faces(b).first, faces(b).second, b);
+  tree.accelerate_distance_queries();
+  std::vector<double> uv_distance(points.size(), kNone), angle(points.size(), kNone);
+  for_each_index_in_parallel(points.size(), [&](std::size_t i) {
+    const Face_sample& s = points[i];
+    const Mesh::Face_index f = tree.closest_point_and_primitive(s.point).second;
+    const auto corners_a = corners_of(s.face, a), corners_b = corners_of(f, b);
+    const std::array<double, 3> weights_b = closest_weights(s.point, f, b);
+    if (uvs) {
+      const Uv p = interpolated_uv(*in_a.uvs, corners_a, s.weights);
+      const Uv q = interpolated_uv(*in_b.uvs, corners_b, weights_b);
+      uv_distance[i] = std::hypot(p[0] - q[0], p[1] - q[1]) / extent;
+    }
+    if (normals) {
+      const Vector m = interpolated_normal(*in_a.normals, corners_a, s.weights);
+      const Vector n = interpolated_normal(*in_b.normals, corners_b, weights_b);
+      // atan2 rather than acos: exact at 0 and accurate near it.
+      angle[i] =
+          std::atan2(std::sqrt(CGAL::cross_product(m, n).squared_length()), m * n) * 180.0 / M_PI;
+    }
+  });
+  if (uvs) summarise(uv_distance, error.uv_mean_rel, error.uv_max_rel);
+  if (normals) summarise(angle, error.normal_angle_mean_deg, error.normal_angle_max_deg);
   return error;
 }
 
@@ -205,6 +428,21 @@ void add_fields(Json_object& json, const Mesh_validity& v) {
   json.add("degenerate_faces", v.degenerate_faces);
   json.add("min_angle_deg", v.min_angle_deg);
   json.add("euler_characteristic", v.euler_characteristic);
+}
+
+void add_fields(Json_object& json, const Attribute_error& e) {
+  const auto add = [&json](const char* name, const auto& field) {
+    if (field) json.add(name, *field);
+  };
+  add("uv_mean_rel", e.uv_mean_rel);
+  add("uv_max_rel", e.uv_max_rel);
+  add("normal_angle_mean_deg", e.normal_angle_mean_deg);
+  add("normal_angle_max_deg", e.normal_angle_max_deg);
+  add("seam_edges_a", e.seam_edges_a);
+  add("seam_edges_b", e.seam_edges_b);
+  add("seam_loops_a", e.seam_loops_a);
+  add("seam_loops_b", e.seam_loops_b);
+  add("flipped_uv_faces", e.flipped_uv_faces);
 }
 
 }  // namespace apps

@@ -1,5 +1,6 @@
-// Metro-style two-sided geometric error between two meshes (docs/evaluation.md) and the validity
-// figures of one mesh, shared by mesh_error, simplify --measure and simplify_bench.
+// Metro-style two-sided geometric error between two meshes (docs/evaluation.md), the error of their
+// corner attributes, and the validity figures of one mesh, shared by mesh_error, simplify --measure
+// and simplify_bench.
 #ifndef CGAL_POLICIES_APPS_MESH_MEASURES_H
 #define CGAL_POLICIES_APPS_MESH_MEASURES_H
 
@@ -10,7 +11,9 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 
+#include <array>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace apps {
@@ -28,6 +31,20 @@ struct Mesh_error {
   std::size_t samples = 0;  // face samples per direction (vertices are sampled as well)
 };
 
+// The error of B's corner attributes (cgal_policies/Corner_attributes.h) against A's, defined in
+// docs/evaluation.md. A field is empty when A or B lacks what it compares.
+struct Attribute_error {
+  // |uv_A - uv_B| at the samples over the diagonal of A's texture-coordinate bounding box.
+  std::optional<double> uv_mean_rel, uv_max_rel;
+  // Angle between the interpolated normals at the samples, in degrees.
+  std::optional<double> normal_angle_mean_deg, normal_angle_max_deg;
+  // Seam edges (Corner_attribute_carrier::is_seam_edge, borders included) and their connected
+  // components.
+  std::optional<std::size_t> seam_edges_a, seam_edges_b, seam_loops_a, seam_loops_b;
+  // Faces of B whose texture triangle does not turn the way the A face nearest its centroid does.
+  std::optional<std::size_t> flipped_uv_faces;
+};
+
 struct Mesh_validity {
   bool valid = false;   // a valid halfedge structure made of triangles only
   bool closed = false;  // no boundary edge
@@ -43,7 +60,18 @@ using Face_tree =
 
 double bbox_diagonal(const Mesh& mesh);
 
-// `samples` area-uniform random points on the faces of `mesh`, the same on every run.
+// A point on a face, with its barycentric weights at the face's corners halfedge(face), next and
+// prev (the corner at target(h) is the halfedge h, as in cgal_policies/Corner_attributes.h).
+struct Face_sample {
+  Mesh::Face_index face;
+  std::array<double, 3> weights;
+  Point point;
+};
+
+// `samples` area-uniform random points on the faces of `mesh`, the same on every run; none on a
+// mesh without area.
+std::vector<Face_sample> sample_face_points(const Mesh& mesh, std::size_t samples);
+// Their points alone.
 std::vector<Point> sample_faces(const Mesh& mesh, std::size_t samples);
 
 // Distances from samples of `a` (its vertices and `samples` area-uniform random points on its
@@ -52,10 +80,17 @@ std::vector<Point> sample_faces(const Mesh& mesh, std::size_t samples);
 Mesh_error measure_mesh_error(const Mesh& a, const Mesh& b,
                               std::size_t samples = kDefaultErrorSamples);
 
+// Compares the corner attributes of `b` with those of `a` at `samples` face samples of `a` and
+// their closest points on `b`, and counts seams and flipped texture triangles. Deterministic.
+Attribute_error measure_attribute_error(const Mesh& a, const Mesh& b,
+                                        std::size_t samples = kDefaultErrorSamples);
+
 Mesh_validity check_mesh_validity(const Mesh& mesh);
 
 void add_fields(Json_object& json, const Mesh_error& error);
 void add_fields(Json_object& json, const Mesh_validity& validity);
+// The fields that are there, none for an empty one.
+void add_fields(Json_object& json, const Attribute_error& error);
 
 }  // namespace apps
 
