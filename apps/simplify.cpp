@@ -138,15 +138,6 @@ void write_mesh_and_snapshot([[maybe_unused]] const Mesh& original, const Mesh& 
 
 using Attributes = cgal_policies::Corner_attributes<Point>;
 
-// "carried" when the run carried the input's texture coordinates and normals through its
-// collapses; "dropped" (and removed) when it could not; "none" when the input had none.
-const char* carried_attributes(Mesh& mesh, bool input_had_them, const Simplify_outcome& outcome) {
-  if (!input_had_them) return "none";
-  if (outcome.attributes_carried) return "carried";
-  Attributes::remove_corner_values(mesh);
-  return "dropped";
-}
-
 int run(int argc, char** argv) {
   Command_line cli(argc, argv);
   if (cli.take_flag("help", "-h")) {
@@ -191,7 +182,7 @@ int run(int argc, char** argv) {
     outcome = policy->run(mesh, settings);
   }
   mesh.collect_garbage();
-  const char* attributes = carried_attributes(mesh, input_had_corner_values, outcome);
+  const char* attributes = settle_corner_attributes(mesh, input_had_corner_values, outcome);
   if (!quiet && std::string(attributes) == "dropped")
     std::cerr << "simplify: " << input << ": texture coordinates and normals dropped (the "
               << policy->name << " policy cannot carry them, or the mesh has edges of length 0)\n";

@@ -65,6 +65,8 @@ void print_help() {
          "  --repetitions N      runs per case; the fastest counts (default: the preset's, "
          "else 3)\n"
          "  --samples N          face samples per direction of the error measure\n"
+         "  --attributes         read the texture coordinates and normals of OBJ meshes, carry\n"
+         "                       them, and measure them (a Corner attributes table)\n"
          "  --time-limit S       stop an edge-collapse run after S seconds where it is,\n"
          "                       and do not repeat it; 0: none (default: the preset's,\n"
          "                       else none)\n"
@@ -171,8 +173,10 @@ int run(int argc, char** argv) {
     throw App_error(exit_usage, "--time-limit must be a number of seconds in [0, 1e9]");
   const std::optional<std::string> out = cli.take_value("out");
   const bool fit_all = cli.take_flag("fit");
+  const bool attributes = cli.take_flag("attributes");
 
   Bench_plan plan;
+  plan.attributes = attributes;
   plan.policies = select_policies(policy_list);
   for (const Policy_entry& p : plan.policies) {
     const Option_values given = take_option_values(cli, p.options);

@@ -1,5 +1,6 @@
 // simplify_bench end to end: the quick preset writes its report files with one row per run and
 // finite numbers, and its gh rows are exactly what simplify --policy gh --measure prints.
+#include "common/mesh_io.h"
 #include "common/policy_registry.h"
 #include "test_meshes.h"
 
@@ -9,6 +10,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -249,6 +251,57 @@ TEST(BenchFit, AddsAFittedRowBesideEachPolicy) {
   const std::string report = read_text(out / "report.md");
   EXPECT_NE(report.find("## Fitting pass"), std::string::npos);
   EXPECT_EQ(count_occurrences(report, "| cow.obj | 10% → 580 | "), 2u) << report;
+  fs::remove_all(out);
+}
+
+// --attributes reads, carries and measures the corner attributes: on a flat grid with a linear
+// texture field every carrying run reproduces the field exactly and keeps its one seam (the
+// border); fast drops them and has no attribute figures.
+TEST(BenchAttributes, CarriesAndMeasuresTheCornerAttributes) {
+  const fs::path out =
+      fs::temp_directory_path() / ("cgal_policies_bench_attributes_" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  fs::create_directories(out);
+  test_meshes::Mesh grid = test_meshes::flat_grid(6);
+  test_meshes::paint_corners(
+      grid,
+      [](test_meshes::Mesh::Face_index, const test_meshes::Point& p) {
+        return std::array<double, 2>{p.x() / 6, p.y() / 6};
+      },
+      false);
+  const fs::path input = out / "grid.obj";
+  apps::write_mesh_atomically(grid, input.string());
+  const std::string bench = std::string(CGAL_POLICIES_BIN_DIR) + "/simplify_bench --mesh '" +
+                            input.string() + "' --faces 8 --policies attributes,fast " +
+                            "--repetitions 1 --samples 2000 --out '" + out.string() + "'";
+  ASSERT_EQ(run_command(bench + " --attributes > /dev/null 2>&1"), 0);
+  const std::vector<Row> rows = read_csv(out / "runs.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  for (const Row& row : rows) {
+    const std::string& policy = row.at("policy");
+    if (policy == "fast") {
+      EXPECT_EQ(row.at("attributes"), "dropped");
+      EXPECT_EQ(row.at("uv_mean_rel"), "");
+      EXPECT_EQ(row.at("seam_loops_b"), "");
+      continue;
+    }
+    EXPECT_EQ(row.at("attributes"), "carried") << policy;
+    EXPECT_LE(std::stod(row.at("uv_max_rel")), 1e-12) << policy;
+    EXPECT_EQ(row.at("flipped_uv_faces"), "0") << policy;
+    EXPECT_EQ(row.at("seam_loops_a"), "1") << policy;
+    EXPECT_EQ(row.at("seam_loops_b"), "1") << policy;
+    EXPECT_EQ(row.at("seam_edges_a"), "24") << policy;
+  }
+  const std::string json = read_text(out / "runs.json");
+  EXPECT_EQ(count_occurrences(json, "\"uv_mean_rel\": "), 2u) << json;
+  EXPECT_NE(read_text(out / "report.md").find("## Corner attributes"), std::string::npos);
+
+  ASSERT_EQ(run_command(bench + " > /dev/null 2>&1"), 0);
+  for (const Row& row : read_csv(out / "runs.csv")) {
+    EXPECT_EQ(row.at("attributes"), "") << row.at("policy");
+    EXPECT_EQ(row.at("uv_mean_rel"), "") << row.at("policy");
+  }
+  EXPECT_EQ(read_text(out / "report.md").find("## Corner attributes"), std::string::npos);
   fs::remove_all(out);
 }
 

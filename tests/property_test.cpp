@@ -537,24 +537,6 @@ using Attributes = cgal_policies::Corner_attributes<Point>;
 const std::vector<std::string> kCarryingPolicies = {"gh",        "gh-prob", "lt",        "classic",
                                                     "curvature", "fusion",  "attributes"};
 
-// Sets every corner's texture coordinate (and normal, when asked) from the point of its vertex.
-template <class Uv_of>
-void paint_corners(Mesh& mesh, const Uv_of& uv_of, bool with_normals) {
-  const Attributes attributes = Attributes::add(mesh, true, with_normals, false);
-  for (auto h : halfedges(mesh)) {
-    if (mesh.is_border(h)) continue;
-    (*attributes.uvs)[h] = uv_of(face(h, mesh), mesh.point(target(h, mesh)));
-    if (with_normals) (*attributes.normals)[h] = Kernel::Vector_3(0, 0, 1);
-  }
-}
-
-double uv_area(const Mesh& mesh, Mesh::Face_index f) {
-  const Attributes attributes(mesh);
-  const auto h = halfedge(f, mesh);
-  return cgal_policies::Corner_attribute_carrier<Point>::uv_area(
-      (*attributes.uvs)[h], (*attributes.uvs)[next(h, mesh)], (*attributes.uvs)[prev(h, mesh)]);
-}
-
 TEST(CarriedAttributes, ALinearFieldOnAFlatMeshIsReproducedExactly) {
   const auto field = [](Mesh::Face_index, const Point& p) {
     return std::array<double, 2>{0.3 * p.x() + 0.1 * p.y(), -0.2 * p.x() + 0.5 * p.y() + 0.25};
@@ -597,75 +579,26 @@ TEST(CarriedAttributes, ATexturedPlaneToTwoTrianglesKeepsItsCornerUvsExactly) {
   }
 }
 
-// A cube of side 4 with a 4 x 4 grid on each side, and each side its own texture chart: side k
-// maps to [k, k + 1] x [0, 1], so every cube edge is a seam and every cube corner a seam corner.
+// The cube of test_meshes::six_sided_cube(): every cube edge is a seam and every cube corner a
+// seam corner.
 TEST(CarriedAttributes, ACubeWithSixChartsKeepsEveryChartWhole) {
-  std::vector<Point> points;
-  std::vector<std::array<int, 3>> triangles;
-  std::map<std::array<int, 3>, int> index;
-  const auto point_index = [&](int x, int y, int z) {
-    const auto [it, added] = index.emplace(std::array<int, 3>{x, y, z}, int(points.size()));
-    if (added) points.emplace_back(x, y, z);
-    return it->second;
-  };
-  // Side k: the point at (s, t) of the side, outward orientation.
-  const auto on_side = [](int k, int s, int t) -> std::array<int, 3> {
-    switch (k) {
-      case 0:
-        return {t, s, 0};
-      case 1:
-        return {s, t, 4};
-      case 2:
-        return {s, 0, t};
-      case 3:
-        return {t, 4, s};
-      case 4:
-        return {0, t, s};
-      default:
-        return {4, s, t};
-    }
-  };
-  for (int k = 0; k < 6; ++k)
-    for (int s = 0; s < 4; ++s)
-      for (int t = 0; t < 4; ++t) {
-        const auto corner = [&](int ds, int dt) {
-          const auto q = on_side(k, s + ds, t + dt);
-          return point_index(q[0], q[1], q[2]);
-        };
-        triangles.push_back({corner(0, 0), corner(1, 0), corner(1, 1)});
-        triangles.push_back({corner(0, 0), corner(1, 1), corner(0, 1)});
-      }
-  const Mesh cube = from_triangles(points, triangles);
+  const Mesh cube = six_sided_cube();
   ASSERT_EQ(cube.number_of_faces(), 192u);
   ASSERT_TRUE(CGAL::is_closed(cube));
-  // The side a face lies on, from its normal; the chart coordinates of a point of that side.
-  const auto side_of = [](const Mesh& mesh, Mesh::Face_index f) {
-    const auto n = CGAL::Polygon_mesh_processing::compute_face_normal(f, mesh);
-    if (n.z() < -0.5) return 0;
-    if (n.z() > 0.5) return 1;
-    if (n.y() < -0.5) return 2;
-    if (n.y() > 0.5) return 3;
-    return n.x() < -0.5 ? 4 : 5;
-  };
-  const auto chart = [](int k, const Point& p) {
-    const std::array<double, 6> s{p.y(), p.x(), p.x(), p.z(), p.z(), p.y()};
-    const std::array<double, 6> t{p.x(), p.y(), p.z(), p.x(), p.y(), p.z()};
-    return std::array<double, 2>{k + s[k] / 4, t[k] / 4};
-  };
   for (const std::string& policy : kCarryingPolicies) {
     Mesh mesh = cube;
     paint_corners(
-        mesh, [&](Mesh::Face_index f, const Point& p) { return chart(side_of(mesh, f), p); },
+        mesh, [&](Mesh::Face_index f, const Point& p) { return cube_chart(cube_side(mesh, f), p); },
         false);
     simplify(mesh, policy, 12);
     EXPECT_EQ(mesh.number_of_faces(), 12u) << policy;
     EXPECT_TRUE(CGAL::is_closed(mesh)) << policy;
     const Attributes attributes(mesh);
     for (auto f : faces(mesh)) {
-      const int k = side_of(mesh, f);
+      const int k = cube_side(mesh, f);
       EXPECT_GT(uv_area(mesh, f), 0) << policy;
       for (auto h : halfedges_around_face(halfedge(f, mesh), mesh))
-        EXPECT_EQ((*attributes.uvs)[h], chart(k, mesh.point(target(h, mesh)))) << policy;
+        EXPECT_EQ((*attributes.uvs)[h], cube_chart(k, mesh.point(target(h, mesh)))) << policy;
     }
   }
 }

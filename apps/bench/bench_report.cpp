@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <type_traits>
 
@@ -29,6 +30,16 @@ std::string csv_cell(const Value& value) {
     return std::to_string(value);
   }
 }
+
+template <typename Value>
+std::string csv_cell(const std::optional<Value>& value) {
+  return value ? csv_cell(*value) : "";
+}
+
+template <typename T>
+struct is_optional : std::false_type {};
+template <typename T>
+struct is_optional<std::optional<T>> : std::true_type {};
 
 std::string format(const char* pattern, double value) {
   char text[64];
@@ -144,6 +155,32 @@ std::string summary(const std::vector<std::vector<const Run_record*>>& groups) {
   return md;
 }
 
+// With --attributes: what each run did with the corner attributes and, when it carried them, their
+// error (docs/evaluation.md).
+std::string attribute_table(const std::vector<Run_record>& records) {
+  const auto cell = [](const auto& value, double scale, const char* pattern) {
+    return value ? format(pattern, scale * double(*value)) : std::string("–");
+  };
+  std::string rows;
+  for (const Run_record& r : records) {
+    if (r.attributes.empty()) continue;
+    const Attribute_error& e = r.attribute_error;
+    rows += "| " + r.mesh + " | " + target_cell(r) + " | " + r.policy + " | " + r.attributes +
+            " | " + cell(e.uv_mean_rel, 100, "%.3g") + " | " + cell(e.uv_max_rel, 100, "%.3g") +
+            " | " + cell(e.normal_angle_mean_deg, 1, "%.3g") + " | " +
+            cell(e.seam_loops_a, 1, "%.0f") + " / " + cell(e.seam_loops_b, 1, "%.0f") + " | " +
+            cell(e.flipped_uv_faces, 1, "%.0f") + " | " + percent(mean_error_rel(r)) + " |\n";
+  }
+  if (rows.empty()) return "";
+  return "## Corner attributes\n\nTexture distance at corresponding points in % of the input's "
+         "texture extent, normal angle in degrees, seam loops in / out, texture triangles turned "
+         "over, and the geometric mean error (both directions, % of the diagonal).\n\n"
+         "| mesh | target → faces | policy | attributes | uv mean % | uv max % | normal mean ° | "
+         "seam loops | flipped | mean % |\n"
+         "|---|---|---|---|--:|--:|--:|--:|--:|--:|\n" +
+         rows + "\n";
+}
+
 // Per fitted run "P+fit": its mean error and Hausdorff distance against P's and lt's on the same
 // mesh and target, and its fitting pass's time against lt's simplification (docs/fitting.md).
 std::string fitting_table(const std::vector<Run_record>& records) {
@@ -207,7 +244,13 @@ std::string runs_json(const std::vector<Run_record>& records, const std::string&
   text += ", \"runs\": [";
   for (std::size_t i = 0; i < records.size(); ++i) {
     Json_object run;
-    for_each_field(records[i], [&](const char* name, const auto& value) { run.add(name, value); });
+    for_each_field(records[i], [&](const char* name, const auto& value) {
+      if constexpr (is_optional<std::decay_t<decltype(value)>>::value) {
+        if (value) run.add(name, *value);
+      } else {
+        run.add(name, value);
+      }
+    });
     text += (i ? ",\n  " : "\n  ") + run.str();
   }
   return text + "\n]}\n";
@@ -225,7 +268,7 @@ std::string markdown_report(const std::vector<Run_record>& records, const std::s
         "run (+ what the run added).\n\n";
   const auto groups = group_by_mesh(records);
   for (const auto& runs : groups) md += mesh_table(runs);
-  return md + fitting_table(records) + summary(groups);
+  return md + fitting_table(records) + attribute_table(records) + summary(groups);
 }
 
 }  // namespace apps

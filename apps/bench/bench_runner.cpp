@@ -4,6 +4,8 @@
 #include "common/Stopwatch.h"
 #include "common/mesh_io.h"
 
+#include <cgal_policies/Corner_attributes.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -73,6 +75,9 @@ Run_record run_policy(const Mesh& original, const Policy_entry& policy, const Be
     if (rep == 0) {
       record.stop_reason = to_string(outcome.stop_reason);
       record.fit_flips = outcome.fit_flips;
+      if (plan.attributes)
+        record.attributes = settle_corner_attributes(
+            mesh, cgal_policies::Corner_attributes<Point>(original).any_corner_values(), outcome);
       result = std::move(mesh);
     } else if (mesh.number_of_faces() != result.number_of_faces()) {
       std::fprintf(stderr, "simplify_bench: %s: %s is not deterministic (%zu then %zu faces)\n",
@@ -93,6 +98,8 @@ Run_record run_policy(const Mesh& original, const Policy_entry& policy, const Be
   record.fit_seconds = *std::min_element(fit_seconds.begin(), fit_seconds.end());
   record.error = measure_mesh_error(original, result, plan.samples);
   record.validity = check_mesh_validity(result);
+  if (record.attributes == "carried")
+    record.attribute_error = measure_attribute_error(original, result, plan.samples);
   return record;
 }
 
@@ -112,7 +119,9 @@ std::vector<Run_record> run_bench(const Bench_plan& plan) {
   std::vector<Run_record> records;
   for (const Bench_mesh& bench_mesh : plan.meshes) {
     Read_report read_report;
-    const Mesh original = read_triangle_mesh(bench_mesh.path, &read_report);
+    const Mesh original = read_triangle_mesh(
+        bench_mesh.path, &read_report,
+        plan.attributes ? Corner_attribute_reading::keep : Corner_attribute_reading::drop);
     const std::string name = std::filesystem::path(bench_mesh.path).filename().string();
     for (const std::string& repair : read_report.repairs)
       std::fprintf(stderr, "simplify_bench: %s: %s\n", bench_mesh.path.c_str(), repair.c_str());

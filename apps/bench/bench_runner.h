@@ -26,6 +26,8 @@ struct Bench_plan {
   std::size_t samples = kDefaultErrorSamples;
   // A run still going after this many seconds stops where it is (0: no limit); see run_policy.
   double time_limit_seconds = 0;
+  // Read the meshes' corner attributes (OBJ), carry them, and measure them (Run_record).
+  bool attributes = false;
   // Called after each mesh with every record so far, to keep partial results of long runs.
   std::function<void(const std::vector<Run_record>&)> on_mesh_done;
 };
@@ -52,6 +54,10 @@ struct Run_record {
   std::size_t fit_flips = 0;
   Mesh_error error;
   Mesh_validity validity;
+  // With Bench_plan::attributes: "carried", "dropped" or "none" (settle_corner_attributes), and the
+  // error of the carried attributes.
+  std::string attributes;
+  Attribute_error attribute_error;
 };
 
 // Calls visit(name, value) for every field of a record, in the order of the CSV columns; the
@@ -98,6 +104,16 @@ void for_each_field(const Run_record& r, Visitor&& visit) {
   visit("euler_characteristic", r.validity.euler_characteristic);
   visit("fit_seconds", r.fit_seconds);
   visit("fit_flips", r.fit_flips);
+  visit("attributes", r.attributes);
+  visit("uv_mean_rel", r.attribute_error.uv_mean_rel);
+  visit("uv_max_rel", r.attribute_error.uv_max_rel);
+  visit("normal_angle_mean_deg", r.attribute_error.normal_angle_mean_deg);
+  visit("normal_angle_max_deg", r.attribute_error.normal_angle_max_deg);
+  visit("seam_edges_a", r.attribute_error.seam_edges_a);
+  visit("seam_edges_b", r.attribute_error.seam_edges_b);
+  visit("seam_loops_a", r.attribute_error.seam_loops_a);
+  visit("seam_loops_b", r.attribute_error.seam_loops_b);
+  visit("flipped_uv_faces", r.attribute_error.flipped_uv_faces);
 }
 
 // The mean error of a record in both directions, averaged, relative to the diagonal: the figure the

@@ -4,6 +4,8 @@
 #include "Json_object.h"
 #include "policy_entries.h"
 
+#include <cgal_policies/Corner_attributes.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -61,6 +63,14 @@ Simplify_settings default_settings(const Policy_entry& policy, std::size_t targe
   settings.target_faces = target_faces;
   for (const Policy_option& o : policy.options) settings.options[o.name] = o.default_value;
   return settings;
+}
+
+const char* settle_corner_attributes(Mesh& mesh, bool input_had_them,
+                                     const Simplify_outcome& outcome) {
+  if (!input_had_them) return "none";
+  if (outcome.attributes_carried) return "carried";
+  cgal_policies::Corner_attributes<Point>::remove_corner_values(mesh);
+  return "dropped";
 }
 
 void check_policy_options(const Policy_entry& policy, const Option_values& values) {
