@@ -8,6 +8,7 @@
 #include "common/app_main.h"
 #include "common/atomic_write.h"
 #include "common/fitting.h"
+#include "common/material_texture.h"
 #include "common/mesh_io.h"
 #include "common/mesh_measures.h"
 #include "common/peak_memory.h"
@@ -64,7 +65,9 @@ void print_help() {
       << ")\n"
          "  --snapshot OUT.png    also render IN and OUT side by side, as mesh_viewer does,\n"
          "                        without a window; all or nothing: when the picture fails,\n"
-         "                        OUT is not written (exit 4, or 1 without OpenGL)"
+         "                        OUT is not written (exit 4, or 1 without OpenGL); when\n"
+         "                        OUT is an OBJ, a textured IN is drawn with its texture\n"
+         "                        (map_Kd; exit 3 when that file is missing)"
 #ifndef CGAL_POLICIES_WITH_VIEWER
          "\n                        (not in this build: mesh_viewer's packages were missing)"
 #endif
@@ -144,7 +147,7 @@ int run(int argc, char** argv) {
     print_help();
     return exit_success;
   }
-  const std::optional<Snapshot_request> snapshot = take_snapshot_options(cli);
+  std::optional<Snapshot_request> snapshot = take_snapshot_options(cli);
   Simplify_request request = take_simplify_request(cli);
   const Policy_entry* policy = request.choice.policy;
   Simplify_settings& settings = request.choice.settings;
@@ -164,6 +167,12 @@ int run(int argc, char** argv) {
   if (!quiet)
     for (const std::string& repair : read_report.repairs)
       std::cerr << "simplify: " << input << ": " << repair << '\n';
+#ifdef CGAL_POLICIES_WITH_VIEWER
+  // Before any work: a texture the picture needs and cannot read is bad input.
+  if (snapshot && Attributes(mesh).uvs)
+    if (const std::optional<std::string> texture = diffuse_texture_file(read_report.materials))
+      snapshot->settings.texture = Texture_image::load(*texture);
+#endif
   const std::size_t input_faces = mesh.number_of_faces();
   const std::size_t input_vertices = mesh.number_of_vertices();
   settings.target_faces = request.target.of(input_faces);
@@ -185,7 +194,7 @@ int run(int argc, char** argv) {
   const char* attributes = settle_corner_attributes(mesh, input_had_corner_values, outcome);
   if (!quiet && std::string(attributes) == "dropped")
     std::cerr << "simplify: " << input << ": texture coordinates and normals dropped (the "
-              << policy->name << " policy cannot carry them, or the mesh has edges of length 0)\n";
+              << policy->name << " policy cannot carry them)\n";
   const Dropped_components vanished =
       request.drop_small_pieces && outcome.stop_reason == Stop_reason::no_collapse_left
           ? drop_smallest_components_until(mesh, settings.target_faces)

@@ -245,11 +245,18 @@ class Attribute_quadric_policies {
         added[found].push_back(group);
         merged[found].quadric += state.pending->group_quadrics[group];
       }
-    } else {  // without attributes every vertex has one wedge
-      Wedge all{corner_value(state, mesh.halfedge(kept)), Attribute_quadric()};
+    } else {
+      // No pending collapse: a collapse of zero length, after which every face keeps its values
+      // (Corner_attribute_carrier::started), or no attributes (one wedge per vertex, all NaN).
+      // The wedges of both ends merge by value.
       for (Vertex v : {profile.v0(), profile.v1()})
-        for (const Wedge& w : state.wedges[v]) all.quadric += w.quadric;
-      merged.push_back(all);
+        for (const Wedge& w : state.wedges[v]) {
+          const int found = find_wedge(merged, w.value);
+          if (found < 0)
+            merged.push_back(w);
+          else
+            merged[found].quadric += w.quadric;
+        }
     }
     state.pending.reset();
     state.wedges[kept] = std::move(merged);

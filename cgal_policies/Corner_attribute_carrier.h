@@ -12,7 +12,8 @@
 // - no texture triangle of the new star changes its orientation.
 // The new corner values around the kept vertex are interpolated at its new point on the old star,
 // one side of each seam at a time: each corner takes the value at the closest point of the faces it
-// can reach around the two old vertices without crossing a seam edge.
+// can reach around the two old vertices without crossing a seam edge. A policy that solves the
+// values itself (Solver) gives them for collapses between two free vertices.
 #ifndef CGAL_POLICIES_CORNER_ATTRIBUTE_CARRIER_H
 #define CGAL_POLICIES_CORNER_ATTRIBUTE_CARRIER_H
 
@@ -29,6 +30,7 @@
 #include <cstddef>
 #include <functional>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <optional>
 #include <vector>
@@ -108,6 +110,7 @@ class Corner_attribute_carrier {
   template <class Profile>
   void collapsing(const Profile& profile, const Point& placement) {
     if (m_solver.before_collapse) m_solver.before_collapse(profile.v0_v1());
+    m_unmoved.clear();  // the zero-length collapses are over
     m_pending.clear();
     for (const Corner_value& value : new_corner_values(profile, placement)) {
       const Halfedge h = value.corner, b = m_mesh->next(h), c = m_mesh->prev(h);
@@ -118,9 +121,27 @@ class Corner_attribute_carrier {
     }
   }
 
+  // Before edge_collapse starts. CGAL first collapses every edge of zero length, with no placement,
+  // filter or OnCollapsing (Edge_collapse.h, collect()). Such a collapse moves no point, so every
+  // face around it keeps its values: they are recorded here and put back by collapsed().
+  void started() {
+    m_unmoved.clear();
+    for (auto e : m_mesh->edges()) {
+      const Halfedge h = m_mesh->halfedge(e);
+      if (m_mesh->point(m_mesh->source(h)) != m_mesh->point(m_mesh->target(h))) continue;
+      for (Vertex v : {m_mesh->source(h), m_mesh->target(h)})
+        for (Halfedge around : CGAL::halfedges_around_target(v, *m_mesh))
+          if (!m_mesh->is_border(around)) record_unmoved(m_mesh->face(around));
+    }
+  }
+
   // After the collapse: the corners of the faces around the kept vertex take their values.
   void collapsed(Vertex kept) {
     forget_seam_edges_around(kept);
+    if (m_pending.empty()) {  // a zero-length collapse (started())
+      restore_unmoved(kept);
+      return;
+    }
     for (const Pending_face& pending : m_pending) {
       if (m_mesh->is_removed(pending.face)) continue;
       for (Halfedge h : CGAL::halfedges_around_face(m_mesh->halfedge(pending.face), *m_mesh)) {
@@ -184,6 +205,55 @@ class Corner_attribute_carrier {
   }
 
   static constexpr std::size_t kUnknown = std::numeric_limits<std::size_t>::max();
+
+  // A face's corners as they were: the vertex of each, and its values.
+  struct Face_values {
+    std::array<Vertex, 3> vertices;
+    std::array<Corner_value, 3> values;
+  };
+
+  void record_unmoved(Face f) {
+    Face_values recorded;
+    std::size_t k = 0;
+    for (Halfedge h : CGAL::halfedges_around_face(m_mesh->halfedge(f), *m_mesh)) {
+      recorded.vertices[k] = m_mesh->target(h);
+      recorded.values[k++] = stored_value(h);
+    }
+    m_unmoved[f] = recorded;
+  }
+
+  // Each face around `kept` takes back the values it had at each of its vertices; its corner at
+  // `kept` takes those of the vertex it had there before.
+  void restore_unmoved(Vertex kept) {
+    for (Halfedge around : CGAL::halfedges_around_target(kept, *m_mesh)) {
+      if (m_mesh->is_border(around)) continue;
+      const Face f = m_mesh->face(around);
+      const auto found = m_unmoved.find(f);
+      if (found == m_unmoved.end()) continue;
+      const Face_values& recorded = found->second;
+      std::array<Vertex, 3> now;
+      std::size_t k = 0;
+      for (Halfedge h : CGAL::halfedges_around_face(m_mesh->halfedge(f), *m_mesh))
+        now[k++] = m_mesh->target(h);
+      for (Halfedge h : CGAL::halfedges_around_face(m_mesh->halfedge(f), *m_mesh)) {
+        const Vertex v = m_mesh->target(h);
+        const auto recorded_index = [&](auto&& is_it) {
+          std::size_t i = 0;
+          while (i < 3 && !is_it(recorded.vertices[i])) ++i;
+          return i;
+        };
+        std::size_t was = recorded_index([&](Vertex r) { return r == v; });
+        if (was == 3)  // at `kept`: the recorded vertex that is no longer a vertex of f
+          was = recorded_index(
+              [&](Vertex r) { return std::find(now.begin(), now.end(), r) == now.end(); });
+        if (was == 3) continue;
+        const Corner_value& value = recorded.values[was];
+        if (m_attributes.uvs) (*m_attributes.uvs)[h] = value.uv;
+        if (m_attributes.normals) (*m_attributes.normals)[h] = value.normal;
+      }
+      record_unmoved(f);
+    }
+  }
 
   void forget_seam_edges_around(Vertex kept) {
     if (m_seam_counts.empty()) return;
@@ -326,6 +396,7 @@ class Corner_attribute_carrier {
   Attributes m_attributes;
   Solver m_solver;
   std::vector<Pending_face> m_pending;
+  std::map<Face, Face_values> m_unmoved;  // faces around edges of zero length, until the loop
   mutable std::vector<std::size_t> m_seam_counts;  // kUnknown until asked
 };
 

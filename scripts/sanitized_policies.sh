@@ -8,7 +8,9 @@
 # the standard preset (10% and 1% for the others), and checks each output with RELEASE_BUILD's
 # mesh_error (default build): valid, no non-manifold vertex, no degenerate face, nothing to
 # repair when read back. Writes out/sanitized/results.tsv, a row per run, as it goes.
-# SANITIZED_MESHES="bunny.obj dragon.ply" runs only those meshes (appending to results.tsv).
+# SANITIZED_MESHES="bunny.obj dragon.ply" runs only those meshes, SANITIZED_RUNS="attributes lt+fit"
+# only those runs (either appends to results.tsv). Outputs are OBJ files, so that a textured mesh
+# carries its texture coordinates and normals through the run.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 if [ $# -lt 1 ] || [ ! -x "$1/bin/simplify" ]; then
@@ -24,10 +26,10 @@ mkdir -p $out
 cases="cow.obj:0.1,0.01 spot.obj:0.1,0.01 bob_tri.obj:0.1,0.01 teapot.obj:0.1,0.01
 woody.obj:0.1,0.01 fandisk.obj:0.1,0.02 rocker-arm.obj:0.1,0.01 alligator.obj:0.1,0.01
 bunny.obj:0.5,0.1,0.01 nefertiti.obj:0.1,0.01 dragon_res2.ply:0.1,0.01 dragon.ply:0.1,0.01"
-runs="gh gh-prob lt classic curvature fusion fast hausdorff lt+fit gh+fit hausdorff+fit"
+runs=${SANITIZED_RUNS:-"gh gh-prob lt classic curvature fusion fast hausdorff attributes lt+fit gh+fit hausdorff+fit"}
 field() { grep -o "\"$1\": [^,}]*" "$2" | head -1 | awk '{print $2}' | tr -d '"'; }
 header=$(printf 'mesh\tratio\trun\texit\tsan_errors\tseconds\tstop_reason\tout_faces\tvalid\tnon_manifold\tdegenerate\treread_repairs')
-[ -n "${SANITIZED_MESHES:-}" ] && [ -f $out/results.tsv ] || echo "$header" >$out/results.tsv
+[ -n "${SANITIZED_MESHES:-}${SANITIZED_RUNS:-}" ] && [ -f $out/results.tsv ] || echo "$header" >$out/results.tsv
 for c in $cases; do
   mesh=${c%%:*}
   [ -n "${SANITIZED_MESHES:-}" ] && [[ " $SANITIZED_MESHES " != *" $mesh "* ]] && continue
@@ -37,7 +39,7 @@ for c in $cases; do
       fit=""
       [ "$run" != "$policy" ] && fit="--fit"
       tag="${mesh%.*}-$ratio-$run"
-      o=$out/$tag.off
+      o=$out/$tag.obj
       $simplify data/$mesh $o $ratio --policy $policy $fit --json --force >$out/$tag.json 2>$out/$tag.err
       code=$?
       san=$(grep -c -E 'ERROR: AddressSanitizer|runtime error|ERROR: LeakSanitizer' $out/$tag.err)

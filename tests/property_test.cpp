@@ -560,6 +560,38 @@ TEST(CarriedAttributes, ALinearFieldOnAFlatMeshIsReproducedExactly) {
   }
 }
 
+// CGAL collapses every edge of zero length first, with no placement, filter or OnCollapsing; such a
+// collapse moves no point, and every face around it keeps the values it had at each vertex
+// (Corner_attribute_carrier::started). The grid's vertex (1, 1) is moved onto (2, 1), its
+// coordinates painted where it was.
+TEST(CarriedAttributes, AZeroLengthEdgeCollapsesWithEveryFaceKeepingItsValues) {
+  for (const std::string& policy : kCarryingPolicies) {
+    Mesh mesh = flat_grid(4);
+    paint_corners(
+        mesh,
+        [](Mesh::Face_index, const Point& p) {
+          return std::array<double, 2>{p.x() / 4, p.y() / 4};
+        },
+        false);
+    mesh.point(Mesh::Vertex_index(6)) = Point(2, 1, 0);
+    const Attributes attributes(mesh);
+    const auto corner_uvs = [&](Mesh::Face_index f) {
+      std::multiset<std::array<double, 2>> uvs;
+      for (auto h : halfedges_around_face(halfedge(f, mesh), mesh))
+        uvs.insert((*attributes.uvs)[h]);
+      return uvs;
+    };
+    std::map<Mesh::Face_index, std::multiset<std::array<double, 2>>> before;
+    for (auto f : faces(mesh)) before[f] = corner_uvs(f);
+    const apps::Policy_entry* entry = apps::find_policy(policy);
+    ASSERT_NE(entry, nullptr);
+    const apps::Simplify_outcome outcome = entry->run(mesh, apps::default_settings(*entry, 30));
+    EXPECT_TRUE(outcome.attributes_carried) << policy;
+    EXPECT_EQ(mesh.number_of_faces(), 30u) << policy;  // the two faces of the edge
+    for (auto f : faces(mesh)) EXPECT_EQ(corner_uvs(f), before.at(f)) << policy;
+  }
+}
+
 TEST(CarriedAttributes, ATexturedPlaneToTwoTrianglesKeepsItsCornerUvsExactly) {
   const auto field = [](Mesh::Face_index, const Point& p) {
     return std::array<double, 2>{p.x() / 8, p.y() / 8};

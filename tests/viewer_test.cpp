@@ -11,6 +11,7 @@
 #include "common/mesh_io.h"
 
 #include <stb_image.h>
+#include <stb_image_write.h>
 
 #include <gtest/gtest.h>
 
@@ -185,6 +186,26 @@ TEST(RenderMesh, FrameCentresTheOriginalAtUnitDiagonal) {
   EXPECT_GT(apps::heat_color(0)[2], apps::heat_color(0)[0]);  // blue at 0
 }
 
+TEST(RenderMesh, ATexturedMeshHasAVertexPerCornerWithItsCoordinatesRowsDown) {
+  Mesh grid = test_meshes::flat_grid(1);  // two triangles
+  test_meshes::paint_corners(
+      grid,
+      [](Mesh::Face_index, const Point&) {
+        return std::array<double, 2>{0.25, 0.75};
+      },
+      false);
+  const apps::Render_mesh render =
+      apps::make_textured_render_mesh(grid, apps::Mesh_frame::of(Indexed_mesh::from_mesh(grid)));
+  ASSERT_EQ(render.vertices.size(), 6u * apps::Render_mesh::kFloatsPerVertex);
+  EXPECT_EQ(render.indices, (std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5}));
+  for (std::size_t v = 0; v < 6; ++v) {
+    const float* vertex = &render.vertices[v * apps::Render_mesh::kFloatsPerVertex];
+    EXPECT_FLOAT_EQ(vertex[5], 1.0f);  // normal +z
+    EXPECT_FLOAT_EQ(vertex[9], 0.25f);
+    EXPECT_FLOAT_EQ(vertex[10], 0.25f);  // 1 - 0.75: the image's rows run down
+  }
+}
+
 // The snapshots run the real binary: the same path as the command line, in a fresh folder.
 class Snapshot : public ::testing::Test {
  protected:
@@ -345,6 +366,53 @@ TEST_F(Snapshot, SimplifyWithABadSizeWritesNothing) {
   EXPECT_EQ(run_simplify(tetra + " " + path("t_out.off") + " 1 --size 64x64"), 2);
   EXPECT_EQ(run_simplify(tetra + " " + path("t_out.off") + " 1 --snapshot " + path("t.jpg")), 2);
   EXPECT_FALSE(std::filesystem::exists(path("t_out.off")));
+}
+
+// A square facing the camera, textured with a 2 x 1 image, red then blue: the picture shows red on
+// the left of each square and blue on its right. A texture the material names but that is missing
+// is bad input, and nothing is written.
+TEST_F(Snapshot, ATexturedMeshIsDrawnWithItsTexture) {
+  std::ofstream(path("square.obj")) << "mtllib square.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+                                       "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl checker\n"
+                                       "f 1/1 2/2 3/3\nf 1/1 3/3 4/4\n";
+  std::ofstream(path("square.mtl")) << "newmtl checker\nmap_Kd -clamp on red_blue.png\n";
+  const unsigned char red_blue[] = {255, 0, 0, 0, 0, 255};
+  ASSERT_NE(stbi_write_png(path("red_blue.png").c_str(), 2, 1, 3, red_blue, 6), 0);
+  ASSERT_EQ(run_simplify(path("square.obj") + " " + path("out.obj") + " 1 --snapshot " +
+                         path("square.png") + " --size 200x100"),
+            0)
+      << output_text();
+  const Picture picture = load_png(path("square.png"));
+  ASSERT_EQ(picture.width, 200);
+  const int y = picture.height * 3 / 5;  // below the captions
+  for (int pane = 0; pane < 2; ++pane) {
+    int first = -1, last = -1;
+    for (int x = pane * 100; x < pane * 100 + 100; ++x)
+      if (!picture.background(x, y)) {
+        if (first < 0) first = x;
+        last = x;
+      }
+    ASSERT_GT(last - first, 20) << "pane " << pane;
+    const auto at = [&](double t) {
+      return &picture.rgb[(std::size_t(y) * 200 + std::size_t(first + t * (last - first))) * 3];
+    };
+    EXPECT_GT(int(at(0.25)[0]), int(at(0.25)[2]) + 100) << "pane " << pane;
+    EXPECT_GT(int(at(0.75)[2]), int(at(0.75)[0]) + 100) << "pane " << pane;
+  }
+
+  std::filesystem::remove(path("red_blue.png"));
+  std::filesystem::remove(path("out.obj"));
+  std::filesystem::remove(path("square.png"));
+  EXPECT_EQ(run_simplify(path("square.obj") + " " + path("out.obj") + " 1 --snapshot " +
+                         path("square.png")),
+            3);
+  EXPECT_NE(output_text().find("square.mtl: texture 'red_blue.png' does not exist"),
+            std::string::npos)
+      << output_text();
+  EXPECT_FALSE(std::filesystem::exists(path("out.obj")));
+  EXPECT_FALSE(std::filesystem::exists(path("square.png")));
+  // Without a picture the texture is not needed.
+  EXPECT_EQ(run_simplify(path("square.obj") + " " + path("out.obj") + " 1"), 0) << output_text();
 }
 
 }  // namespace

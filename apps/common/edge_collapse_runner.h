@@ -16,7 +16,6 @@
 #include <CGAL/Surface_mesh_simplification/Edge_collapse_visitor_base.h>
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 
-#include <algorithm>
 #include <chrono>
 #include <functional>
 #include <optional>
@@ -90,6 +89,9 @@ class Progress_visitor
   Progress_visitor(const Mesh& mesh, const Simplify_settings& settings, Pending_collapse& pending,
                    Attribute_carrier* carrier)
       : m_mesh(&mesh), m_settings(&settings), m_pending(&pending), m_carrier(carrier) {}
+  void OnStarted(Mesh&) {
+    if (m_carrier) m_carrier->started();
+  }
   template <typename Profile, typename Cost>
   void OnSelected(const Profile&, const Cost&, std::size_t, std::size_t) {
     m_pending->report(*m_settings);
@@ -130,16 +132,8 @@ Simplify_outcome run_edge_collapse(
     const std::function<void(Attribute_carrier&)>& solve_attributes = {}) {
   const Stopwatch watch;
   Attribute_carrier carrier(mesh);
-  // CGAL collapses edges of zero length first, without a placement or the filter: the carrier
-  // would not see them (a fuzz finding), so such a mesh does not carry its attributes.
-  const auto zero_length = [&](Mesh::Edge_index e) {
-    return mesh.point(mesh.source(mesh.halfedge(e))) == mesh.point(mesh.target(mesh.halfedge(e)));
-  };
   Attribute_carrier* const carried =
-      carrying == Attribute_carrying::interpolate && carrier.active() &&
-              std::none_of(mesh.edges().begin(), mesh.edges().end(), zero_length)
-          ? &carrier
-          : nullptr;
+      carrying == Attribute_carrying::interpolate && carrier.active() ? &carrier : nullptr;
   if (carried && solve_attributes) solve_attributes(*carried);
   const cgal_policies::Seam_keeping_placement<Point, GetPlacement> placement(base_placement,
                                                                              carried);

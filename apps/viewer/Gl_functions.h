@@ -9,8 +9,10 @@
 #include <functional>
 
 #define CGAL_POLICIES_VIEWER_GL_FUNCTIONS(X)                   \
+  X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                     \
   X(PFNGLATTACHSHADERPROC, AttachShader)                       \
   X(PFNGLBINDBUFFERPROC, BindBuffer)                           \
+  X(PFNGLBINDTEXTUREPROC, BindTexture)                         \
   X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)                 \
   X(PFNGLBLENDFUNCPROC, BlendFunc)                             \
   X(PFNGLBUFFERDATAPROC, BufferData)                           \
@@ -22,6 +24,7 @@
   X(PFNGLDELETEBUFFERSPROC, DeleteBuffers)                     \
   X(PFNGLDELETEPROGRAMPROC, DeleteProgram)                     \
   X(PFNGLDELETESHADERPROC, DeleteShader)                       \
+  X(PFNGLDELETETEXTURESPROC, DeleteTextures)                   \
   X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays)           \
   X(PFNGLDISABLEPROC, Disable)                                 \
   X(PFNGLDRAWARRAYSPROC, DrawArrays)                           \
@@ -30,6 +33,7 @@
   X(PFNGLENABLEVERTEXATTRIBARRAYPROC, EnableVertexAttribArray) \
   X(PFNGLFINISHPROC, Finish)                                   \
   X(PFNGLGENBUFFERSPROC, GenBuffers)                           \
+  X(PFNGLGENTEXTURESPROC, GenTextures)                         \
   X(PFNGLGENVERTEXARRAYSPROC, GenVertexArrays)                 \
   X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)             \
   X(PFNGLGETPROGRAMIVPROC, GetProgramiv)                       \
@@ -42,6 +46,8 @@
   X(PFNGLPOLYGONOFFSETPROC, PolygonOffset)                     \
   X(PFNGLREADPIXELSPROC, ReadPixels)                           \
   X(PFNGLSHADERSOURCEPROC, ShaderSource)                       \
+  X(PFNGLTEXIMAGE2DPROC, TexImage2D)                           \
+  X(PFNGLTEXPARAMETERIPROC, TexParameteri)                     \
   X(PFNGLUNIFORM1IPROC, Uniform1i)                             \
   X(PFNGLUNIFORM2FPROC, Uniform2f)                             \
   X(PFNGLUNIFORM3FPROC, Uniform3f)                             \

@@ -1,5 +1,9 @@
 #include "Render_mesh.h"
 
+#include <cgal_policies/Corner_attributes.h>
+
+#include <CGAL/boost/graph/iterator.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -53,10 +57,40 @@ Render_mesh make_render_mesh(const Indexed_mesh& mesh, const Mesh_frame& frame,
         values.empty() ? kSurfaceColor : heat_color(max_value > 0 ? values[v] / max_value : 0);
     for (double x : {p.x(), p.y(), p.z(), n.x(), n.y(), n.z()}) result.vertices.push_back(float(x));
     result.vertices.insert(result.vertices.end(), color.begin(), color.end());
+    result.vertices.insert(result.vertices.end(), {0.0f, 0.0f});
   }
   result.indices.reserve(mesh.triangles.size() * 3);
   for (const auto& t : mesh.triangles)
     result.indices.insert(result.indices.end(), t.begin(), t.end());
+  return result;
+}
+
+Render_mesh make_textured_render_mesh(const Mesh& mesh, const Mesh_frame& frame) {
+  const cgal_policies::Corner_attributes<Point> attributes(mesh);
+  CGAL_precondition(attributes.uvs.has_value());
+  std::vector<Kernel::Vector_3> normals(mesh.num_vertices(), CGAL::NULL_VECTOR);
+  for (const auto f : mesh.faces()) {
+    const auto h = mesh.halfedge(f);
+    const Point &a = mesh.point(mesh.source(h)), &b = mesh.point(mesh.target(h)),
+                &c = mesh.point(mesh.target(mesh.next(h)));
+    const Kernel::Vector_3 n = CGAL::cross_product(b - a, c - a);
+    for (const auto corner : CGAL::halfedges_around_face(h, mesh))
+      normals[std::size_t(mesh.target(corner))] = normals[std::size_t(mesh.target(corner))] + n;
+  }
+  Render_mesh result;
+  for (const auto f : mesh.faces())
+    for (const auto corner : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      const auto v = mesh.target(corner);
+      const Kernel::Vector_3 p = (mesh.point(v) - frame.center) * frame.scale;
+      const double length = std::sqrt(normals[std::size_t(v)].squared_length());
+      const Kernel::Vector_3 n = length > 0 ? normals[std::size_t(v)] / length : CGAL::NULL_VECTOR;
+      const auto& uv = (*attributes.uvs)[corner];
+      for (double x : {p.x(), p.y(), p.z(), n.x(), n.y(), n.z()})
+        result.vertices.push_back(float(x));
+      result.vertices.insert(result.vertices.end(), kSurfaceColor.begin(), kSurfaceColor.end());
+      result.vertices.insert(result.vertices.end(), {float(uv[0]), float(1 - uv[1])});
+      result.indices.push_back(std::uint32_t(result.indices.size()));
+    }
   return result;
 }
 

@@ -1,6 +1,7 @@
-// What the GPU draws of one mesh: interleaved vertices (position, smooth normal, colour) in the
-// frame where the original is centred at the origin with a bounding-box diagonal of 1, and the
-// triangles' indices. Optional per-vertex values colour it as a heat map.
+// What the GPU draws of one mesh: interleaved vertices (position, smooth normal, colour, texture
+// coordinate) in the frame where the original is centred at the origin with a bounding-box
+// diagonal of 1, and the triangles' indices. Optional per-vertex values colour it as a heat map; a
+// mesh with texture coordinates gets a vertex per corner, so that seams keep both sides' values.
 #ifndef CGAL_POLICIES_APPS_VIEWER_RENDER_MESH_H
 #define CGAL_POLICIES_APPS_VIEWER_RENDER_MESH_H
 
@@ -21,7 +22,7 @@ struct Mesh_frame {
 };
 
 struct Render_mesh {
-  static constexpr int kFloatsPerVertex = 9;
+  static constexpr int kFloatsPerVertex = 11;
   std::vector<float> vertices;
   std::vector<std::uint32_t> indices;
 };
@@ -35,6 +36,10 @@ std::array<float, 3> heat_color(double t);
 // `values` (by vertex index, may be empty) are coloured from 0 to `max_value`.
 Render_mesh make_render_mesh(const Indexed_mesh& mesh, const Mesh_frame& frame,
                              const std::vector<double>& values = {}, double max_value = 0);
+
+// The faces of `mesh` with its corners' texture coordinates (cgal_policies::Corner_attributes;
+// v turned to run downwards, as the image's rows); needs the texture coordinate map.
+Render_mesh make_textured_render_mesh(const Mesh& mesh, const Mesh_frame& frame);
 
 }  // namespace apps
 

@@ -15,16 +15,19 @@ constexpr const char* kMeshVertexShader = R"(#version 330 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec3 color;
+layout(location = 3) in vec2 uv;
 uniform mat4 model_view;
 uniform mat4 projection;
 out vec3 view_position;
 out vec3 view_normal;
 out vec3 base_color;
+out vec2 texture_uv;
 void main() {
   vec4 p = model_view * vec4(position, 1.0);
   view_position = p.xyz;
   view_normal = mat3(model_view) * normal;
   base_color = color;
+  texture_uv = uv;
   gl_Position = projection * p;
 }
 )";
@@ -34,9 +37,12 @@ constexpr const char* kMeshFragmentShader = R"(#version 330 core
 in vec3 view_position;
 in vec3 view_normal;
 in vec3 base_color;
+in vec2 texture_uv;
 uniform int flat_shading;
 uniform int solid;
 uniform vec3 solid_color;
+uniform int textured;
+uniform sampler2D texture_map;
 out vec4 fragment;
 void main() {
   if (solid == 1) {
@@ -45,7 +51,8 @@ void main() {
   }
   vec3 n = flat_shading == 1 ? cross(dFdx(view_position), dFdy(view_position)) : view_normal;
   float lit = abs(dot(normalize(n), normalize(-view_position)));
-  fragment = vec4(base_color * (0.25 + 0.75 * lit) + vec3(0.12 * pow(lit, 24.0)), 1.0);
+  vec3 surface = textured == 1 ? texture(texture_map, texture_uv).rgb : base_color;
+  fragment = vec4(surface * (0.25 + 0.75 * lit) + vec3(0.12 * pow(lit, 24.0)), 1.0);
 }
 )";
 
@@ -165,6 +172,8 @@ Scene_renderer::Scene_renderer(const Gl_functions& gl) : m_gl(gl) {
     attribute(gl, 0, 3, Render_mesh::kFloatsPerVertex, 0);
     attribute(gl, 1, 3, Render_mesh::kFloatsPerVertex, 3);
     attribute(gl, 2, 3, Render_mesh::kFloatsPerVertex, 6);
+    attribute(gl, 3, 2, Render_mesh::kFloatsPerVertex, 9);
+    gl.GenTextures(1, &mesh.texture);
   }
   gl.GenVertexArrays(1, &m_overlay_array);
   gl.GenBuffers(1, &m_overlay_buffer);
@@ -180,6 +189,7 @@ Scene_renderer::~Scene_renderer() {
     m_gl.DeleteBuffers(1, &mesh.vertex_buffer);
     m_gl.DeleteBuffers(1, &mesh.index_buffer);
     m_gl.DeleteVertexArrays(1, &mesh.vertex_array);
+    m_gl.DeleteTextures(1, &mesh.texture);
   }
   m_gl.DeleteBuffers(1, &m_overlay_buffer);
   m_gl.DeleteVertexArrays(1, &m_overlay_array);
@@ -197,6 +207,21 @@ void Scene_renderer::set_mesh(Pane pane, const Render_mesh& mesh) {
                   mesh.indices.data(), GL_DYNAMIC_DRAW);
   m_gl.BindVertexArray(0);
   gpu.index_count = GLsizei(mesh.indices.size());
+}
+
+void Scene_renderer::set_texture(Pane pane, const Texture_image* image) {
+  Gpu_mesh& gpu = m_meshes[pane];
+  gpu.textured = image != nullptr;
+  if (!image) return;
+  m_gl.BindTexture(GL_TEXTURE_2D, gpu.texture);
+  m_gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);  // RGB rows need not be 4-byte aligned
+  m_gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, image->width, image->height, 0, GL_RGB,
+                  GL_UNSIGNED_BYTE, image->rgb.data());
+  m_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  m_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  m_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  m_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  m_gl.BindTexture(GL_TEXTURE_2D, 0);
 }
 
 void Scene_renderer::draw(int width, int height, const Orbit_camera& camera,
@@ -228,6 +253,10 @@ void Scene_renderer::draw_mesh(const Gpu_mesh& mesh, const Eigen::Matrix4f& mode
                         projection.data());
   m_gl.Uniform1i(m_gl.GetUniformLocation(m_mesh_program, "flat_shading"), options.flat_shading);
   const GLint solid = m_gl.GetUniformLocation(m_mesh_program, "solid");
+  m_gl.Uniform1i(m_gl.GetUniformLocation(m_mesh_program, "textured"), mesh.textured);
+  m_gl.Uniform1i(m_gl.GetUniformLocation(m_mesh_program, "texture_map"), 0);
+  m_gl.ActiveTexture(GL_TEXTURE0);
+  m_gl.BindTexture(GL_TEXTURE_2D, mesh.textured ? mesh.texture : 0);
   m_gl.BindVertexArray(mesh.vertex_array);
   // The wireframe is drawn over the faces, which are pushed back a little so the lines win.
   m_gl.Enable(GL_POLYGON_OFFSET_FILL);
@@ -243,6 +272,7 @@ void Scene_renderer::draw_mesh(const Gpu_mesh& mesh, const Eigen::Matrix4f& mode
     m_gl.PolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   }
   m_gl.BindVertexArray(0);
+  m_gl.BindTexture(GL_TEXTURE_2D, 0);
   m_gl.Disable(GL_DEPTH_TEST);
 }
 

@@ -1,13 +1,14 @@
 // Draws the viewer's picture with OpenGL 3.3 core: the original mesh in the left pane and the
-// simplified one in the right pane under one camera, flat or smooth shaded, with an optional
-// wireframe, a caption per pane and, with the heat map, a colour legend. The window and the
-// offscreen snapshots draw through the same code, so they show the same picture.
+// simplified one in the right pane under one camera, flat or smooth shaded, textured when given an
+// image, with an optional wireframe, a caption per pane and, with the heat map, a colour legend.
+// The window and the offscreen snapshots draw through the same code, so they show the same picture.
 #ifndef CGAL_POLICIES_APPS_VIEWER_SCENE_RENDERER_H
 #define CGAL_POLICIES_APPS_VIEWER_SCENE_RENDERER_H
 
 #include "Gl_functions.h"
 #include "Orbit_camera.h"
 #include "Render_mesh.h"
+#include "Texture_image.h"
 
 #include <array>
 #include <cstddef>
@@ -43,6 +44,9 @@ class Scene_renderer {
   Scene_renderer& operator=(const Scene_renderer&) = delete;
 
   void set_mesh(Pane pane, const Render_mesh& mesh);
+  // The pane's mesh takes its surface colour from `image` at its texture coordinates; none: from
+  // its vertices' colours.
+  void set_texture(Pane pane, const Texture_image* image);
   // Draws the two panes side by side in the columns [scene_left, width) of the framebuffer; the
   // columns left of them are cleared only (the window's control panel sits there).
   void draw(int width, int height, const Orbit_camera& camera, const View_options& options,
@@ -50,8 +54,9 @@ class Scene_renderer {
 
  private:
   struct Gpu_mesh {
-    GLuint vertex_array = 0, vertex_buffer = 0, index_buffer = 0;
+    GLuint vertex_array = 0, vertex_buffer = 0, index_buffer = 0, texture = 0;
     GLsizei index_count = 0;
+    bool textured = false;
   };
 
   void draw_mesh(const Gpu_mesh& mesh, const Eigen::Matrix4f& model_view,

@@ -6,6 +6,8 @@
 #include "common/atomic_write.h"
 #include "common/mesh_measures.h"
 
+#include <cgal_policies/Corner_attributes.h>
+
 #include <stb_image_write.h>
 
 #include <algorithm>
@@ -62,9 +64,22 @@ void write_snapshot(const Mesh& original, const Mesh& simplified, const Snapshot
   std::vector<std::uint8_t> pixels;
   {
     Scene_renderer renderer(gl);
-    renderer.set_mesh(Scene_renderer::left, make_render_mesh(left, frame));
-    renderer.set_mesh(Scene_renderer::right,
-                      make_render_mesh(right, frame, errors, captions.legend_max));
+    const auto textured = [&](const Mesh& mesh) {
+      return settings.texture && cgal_policies::Corner_attributes<Point>(mesh).uvs.has_value();
+    };
+    if (textured(original)) {
+      renderer.set_mesh(Scene_renderer::left, make_textured_render_mesh(original, frame));
+      renderer.set_texture(Scene_renderer::left, &*settings.texture);
+    } else {
+      renderer.set_mesh(Scene_renderer::left, make_render_mesh(left, frame));
+    }
+    if (textured(compact) && !settings.heat_map) {
+      renderer.set_mesh(Scene_renderer::right, make_textured_render_mesh(compact, frame));
+      renderer.set_texture(Scene_renderer::right, &*settings.texture);
+    } else {
+      renderer.set_mesh(Scene_renderer::right,
+                        make_render_mesh(right, frame, errors, captions.legend_max));
+    }
     renderer.draw(settings.width, settings.height, Orbit_camera(), settings.view, captions);
     gl.Finish();
     pixels = context.rgb_pixels();

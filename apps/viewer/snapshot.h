@@ -4,8 +4,10 @@
 #define CGAL_POLICIES_APPS_VIEWER_SNAPSHOT_H
 
 #include "Scene_renderer.h"
+#include "Texture_image.h"
 
 #include <cstddef>
+#include <optional>
 #include <string>
 
 namespace apps {
@@ -15,6 +17,9 @@ struct Snapshot_settings {
   View_options view;
   bool heat_map = false;  // colour `simplified` by its distance to `original`
   std::string left_caption, right_caption;
+  // Drawn on each mesh that has texture coordinates (cgal_policies::Corner_attributes), but for a
+  // heat map.
+  std::optional<Texture_image> texture;
 };
 
 // Face samples per direction for the viewer's error figures: a tenth of the apps' default keeps
