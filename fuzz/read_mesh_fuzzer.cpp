@@ -1,7 +1,9 @@
 // Fuzzes one reader (the extension is FUZZ_EXTENSION, one target per format): the bytes become a
-// file that apps::read_triangle_mesh reads as simplify would. It must give a valid triangle mesh or
-// App_error(exit_bad_input) with one line; anything else (a crash, another exception, a sanitizer
-// report, an allocation beyond libFuzzer's limit, a hang) is a finding.
+// file that apps::read_triangle_mesh reads as simplify would when it keeps corner attributes
+// (texture coordinates, normals and materials of OBJ; normals and texture coordinates of PLY). It
+// must give a valid triangle mesh or App_error(exit_bad_input) with one line; anything else (a
+// crash, another exception, a sanitizer report, an allocation beyond libFuzzer's limit, a hang) is
+// a finding.
 #include "fuzz_checks.h"
 
 #include "common/App_error.h"
@@ -38,7 +40,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::fclose(file);
   }
   try {
-    const apps::Mesh mesh = apps::read_triangle_mesh(path);
+    const apps::Mesh mesh =
+        apps::read_triangle_mesh(path, nullptr, apps::Corner_attribute_reading::keep);
     fuzz::require_finite_triangle_mesh(mesh, "a mesh read from " + path);
   } catch (const apps::App_error& error) {
     fuzz::require_one_line_error(error, apps::exit_bad_input);

@@ -1086,6 +1086,54 @@ TEST(CornerAttributes, AFileWithoutThemHasEmptyLists) {
   EXPECT_TRUE(soup.corners.polygon_materials.empty());
 }
 
+// A PLY file's per-vertex normals and texture coordinates become the values of every corner of
+// their vertex, on the mesh and in an OBJ file written from it; one that is not finite is bad
+// input.
+TEST(CornerAttributes, PlyVertexNormalsAndTextureCoordinatesGoToEveryCorner) {
+  const auto square = [](const std::string& third_u) {
+    return "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+           "property float z\nproperty float nx\nproperty float ny\nproperty float nz\n"
+           "property float texture_u\nproperty float texture_v\nelement face 2\n"
+           "property list uchar int vertex_indices\nend_header\n"
+           "0 0 0 0 0 1 0 0\n1 0 0 0 0 1 0.5 0\n1 1 0 0 0 1 " +
+           third_u + " 0.5\n0 1 0 0 0 1 0 0.5\n3 0 1 2\n3 0 2 3\n";
+  };
+  const apps::Polygon_soup soup = apps::parse_ply("f", square("0.5"));
+  EXPECT_EQ(soup.corners.uvs,
+            (std::vector<std::array<double, 2>>{{0, 0}, {0.5, 0}, {0.5, 0.5}, {0, 0.5}}));
+  EXPECT_EQ(soup.corners.normals, std::vector<apps::Kernel::Vector_3>(4, {0, 0, 1}));
+  EXPECT_EQ(soup.corners.polygon_uvs, soup.polygons);
+  EXPECT_EQ(soup.corners.polygon_normals, soup.polygons);
+
+  const fs::path folder = fs::temp_directory_path() / ("ply_corners_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  std::ofstream(folder / "square.ply") << square("0.5");
+  const Mesh mesh = apps::read_triangle_mesh((folder / "square.ply").string(), nullptr,
+                                             apps::Corner_attribute_reading::keep);
+  apps::write_mesh_atomically(mesh, (folder / "square.obj").string());
+  const Mesh reread = apps::read_triangle_mesh((folder / "square.obj").string(), nullptr,
+                                               apps::Corner_attribute_reading::keep);
+  for (const Mesh* m : {&mesh, &reread}) {
+    const Attributes attributes(*m);
+    ASSERT_TRUE(attributes.uvs && attributes.normals);
+    for (const auto h : m->halfedges()) {
+      if (m->is_border(h)) continue;
+      const apps::Point& p = m->point(m->target(h));
+      EXPECT_EQ((*attributes.uvs)[h], (std::array<double, 2>{p.x() / 2, p.y() / 2}));
+      EXPECT_EQ((*attributes.normals)[h], apps::Kernel::Vector_3(0, 0, 1));
+    }
+  }
+  fs::remove_all(folder);
+
+  try {
+    apps::parse_ply("f", square("nan"));
+    ADD_FAILURE() << "a texture coordinate of nan was read";
+  } catch (const apps::App_error& e) {
+    EXPECT_EQ(e.code(), apps::exit_bad_input);
+    EXPECT_EQ(std::string(e.what()), "f: vertex 2: its texture coordinate is not finite");
+  }
+}
+
 TEST(CornerAttributes, BadEntriesAreOneBadInputLine) {
   const auto cause = [](const std::string& bytes) {
     try {

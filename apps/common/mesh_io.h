@@ -25,7 +25,8 @@ struct Read_report {
 };
 
 // Whether the reader puts a file's texture coordinates, normals and materials on the mesh
-// (cgal_policies::Corner_attributes), or reads the surface alone. Only OBJ files carry them yet.
+// (cgal_policies::Corner_attributes), or reads the surface alone. OBJ files carry all three, PLY
+// files per-vertex normals and texture coordinates; the others none.
 enum class Corner_attribute_reading { drop, keep };
 
 bool has_supported_mesh_extension(const std::string& path);

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstring>
 #include <optional>
+#include <utility>
 
 namespace apps {
 namespace {
@@ -481,15 +482,30 @@ Polygon_soup parse_ply(const std::string& source, std::string_view bytes) {
   for (const Ply_element& element : header.elements) {
     const bool is_vertex = element.name == "vertex", is_face = element.name == "face",
                is_strip = element.name == "tristrips";
-    int xyz_slot[3] = {-1, -1, -1};
+    int xyz_slot[3] = {-1, -1, -1}, normal_slot[3] = {-1, -1, -1}, uv_slot[2] = {-1, -1};
     if (is_vertex) {
-      for (std::size_t p = 0; p < element.properties.size(); ++p)
-        for (int axis = 0; axis < 3; ++axis)
-          if (element.properties[p].name == std::string(1, char('x' + axis)) &&
-              !element.properties[p].count_type)
-            xyz_slot[axis] = int(p);
+      const auto slot = [&](std::string_view name) {
+        for (std::size_t p = 0; p < element.properties.size(); ++p)
+          if (element.properties[p].name == name && !element.properties[p].count_type)
+            return int(p);
+        return -1;
+      };
+      for (int axis = 0; axis < 3; ++axis) {
+        xyz_slot[axis] = slot(std::string(1, char('x' + axis)));
+        normal_slot[axis] = slot("n" + std::string(1, char('x' + axis)));
+      }
       if (std::count(xyz_slot, xyz_slot + 3, -1) > 0)
         fail(source, "the vertex element has no x, y and z");
+      // The names texture coordinates go by in the PLY files of common tools.
+      for (const auto& [u, v] : {std::pair<const char*, const char*>{"s", "t"},
+                                 {"u", "v"},
+                                 {"texture_u", "texture_v"},
+                                 {"texture_s", "texture_t"}})
+        if (uv_slot[0] < 0 && slot(u) >= 0 && slot(v) >= 0) {
+          uv_slot[0] = slot(u);
+          uv_slot[1] = slot(v);
+        }
+      if (std::count(normal_slot, normal_slot + 3, -1) > 0) normal_slot[0] = -1;
       has_points = true;
       soup.points.reserve(element.count);
     }
@@ -497,13 +513,17 @@ Polygon_soup parse_ply(const std::string& source, std::string_view bytes) {
                 ((is_face || is_strip) &&
                  std::any_of(element.properties.begin(), element.properties.end(), is_index_list));
     for (std::size_t row = 0; row < element.count; ++row) {
-      double xyz[3] = {0, 0, 0};
+      double xyz[3] = {0, 0, 0}, normal[3] = {0, 0, 0}, uv[2] = {0, 0};
       for (std::size_t p = 0; p < element.properties.size(); ++p) {
         const Ply_property& property = element.properties[p];
         if (!property.count_type) {
           const double value = values.next(*property.type);
-          for (int axis = 0; axis < 3; ++axis)
+          for (int axis = 0; axis < 3; ++axis) {
             if (xyz_slot[axis] == int(p)) xyz[axis] = value;
+            if (normal_slot[axis] == int(p)) normal[axis] = value;
+          }
+          for (int k = 0; k < 2; ++k)
+            if (uv_slot[k] == int(p)) uv[k] = value;
           continue;
         }
         const double count = values.next(*property.count_type);
@@ -523,11 +543,25 @@ Polygon_soup parse_ply(const std::string& source, std::string_view bytes) {
         else
           soup.polygons.emplace_back(list.begin(), list.end());
       }
-      if (is_vertex) soup.points.emplace_back(xyz[0], xyz[1], xyz[2]);
+      if (!is_vertex) continue;
+      soup.points.emplace_back(xyz[0], xyz[1], xyz[2]);
+      if (normal_slot[0] >= 0) {
+        if (!(std::isfinite(normal[0]) && std::isfinite(normal[1]) && std::isfinite(normal[2])))
+          fail(source, "vertex " + std::to_string(row) + ": its normal is not finite");
+        soup.corners.normals.emplace_back(normal[0], normal[1], normal[2]);
+      }
+      if (uv_slot[0] >= 0) {
+        if (!(std::isfinite(uv[0]) && std::isfinite(uv[1])))
+          fail(source, "vertex " + std::to_string(row) + ": its texture coordinate is not finite");
+        soup.corners.uvs.push_back({uv[0], uv[1]});
+      }
     }
   }
   if (!has_points) fail(source, "no vertex element");
   if (!has_faces) fail(source, "no faces (no face or tristrips element with vertex_indices)");
+  // Per-vertex values: every corner takes its vertex's entry.
+  if (!soup.corners.normals.empty()) soup.corners.polygon_normals = soup.polygons;
+  if (!soup.corners.uvs.empty()) soup.corners.polygon_uvs = soup.polygons;
   return soup;
 }
 

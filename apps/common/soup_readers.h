@@ -19,7 +19,7 @@
 
 namespace apps {
 
-// What an OBJ file's corners and faces carry besides their points: its tables of texture
+// What an OBJ (or PLY) file's corners and faces carry besides their points: its tables of texture
 // coordinates and normals, and for each polygon the table entry of each corner (kNoEntry where
 // the corner names none; the lists are empty when no corner names one); its material libraries as
 // the file names them, the material names its faces use, and each polygon's material (an index
@@ -37,7 +37,7 @@ struct Corner_tables {
 struct Polygon_soup {
   std::vector<Point> points;
   std::vector<std::vector<std::size_t>> polygons;
-  Corner_tables corners;  // OBJ only
+  Corner_tables corners;  // OBJ and PLY
 };
 
 // OBJ: points from "v" lines (x y z; a w or colour after them is skipped), polygons from "f"
@@ -52,10 +52,12 @@ Polygon_soup parse_obj(const std::string& source, std::string_view bytes);
 // and # comments. Throws App_error(exit_bad_input, "<source>: <cause>").
 Polygon_soup parse_off(const std::string& source, std::string_view bytes);
 
-// PLY, ASCII or binary of either byte order: x, y, z of the "vertex" element, of any scalar type;
-// faces from the "face" element's vertex_indices (or vertex_index) list, or from the "tristrips"
-// element's list, where -1 restarts the strip. Other elements and properties are skipped.
-// Throws App_error(exit_bad_input, "<source>: <cause>").
+// PLY, ASCII or binary of either byte order: x, y, z of the "vertex" element, of any scalar type,
+// and its normal (nx, ny, nz) and texture coordinates (s, t; u, v; texture_u, texture_v or
+// texture_s, texture_t) when it has them, as per-vertex entries of the corner tables; faces from
+// the "face" element's vertex_indices (or vertex_index) list, or from the "tristrips" element's
+// list, where -1 restarts the strip. Other elements and properties are skipped. Throws
+// App_error(exit_bad_input, "<source>: <cause>").
 Polygon_soup parse_ply(const std::string& source, std::string_view bytes);
 
 }  // namespace apps
