@@ -40,7 +40,7 @@ case "${1:-}" in
     # Every policy of the suite beside CGAL's own, on the shipped cow at 10% of its faces: the
     # table (time against gh, two-sided errors, validity) ...
     build/bin/simplify_bench --mesh data/cow.obj --ratios 0.1 --out out/demo \
-      --policies gh,gh-prob,lt,classic,curvature,fusion,fast,hausdorff
+      --policies gh,gh-prob,lt,classic,curvature,fusion,fast,hausdorff,attributes
     # ... and the input beside the output of the Hausdorff-bounded policy, drawn offscreen.
     if build/bin/simplify data/cow.obj out/demo/cow_hausdorff.obj 0.1 --policy hausdorff \
          --measure --snapshot out/demo/cow_hausdorff.png --quiet --force; then
