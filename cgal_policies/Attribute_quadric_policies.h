@@ -318,12 +318,7 @@ class Attribute_quadric_policies {
     Eigen::AlignedBox3d box;
     for (Vertex v : vertices(tm)) box.extend(internal::to_eigen(get(vpm, v)));
     const double diagonal = box.isEmpty() ? 0 : box.diagonal().norm();
-    Eigen::AlignedBox2d uv_box;
-    for (Halfedge h : halfedges(tm)) {
-      const Values value = corner_value(state, h);
-      if (std::isfinite(value[0]) && std::isfinite(value[1])) uv_box.extend(value.head<2>());
-    }
-    const double uv_extent = uv_box.isEmpty() ? 0 : uv_box.diagonal().norm();
+    const double uv_extent = state.carrier ? state.carrier->attributes().uv_extent(tm) : 0;
     Values scale = Values::Zero();
     if (uv_extent > 0) scale.head<2>().setConstant(state.options.uv_weight * diagonal / uv_extent);
     scale.tail<3>().setConstant(state.options.normal_weight * diagonal);

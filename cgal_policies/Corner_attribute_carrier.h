@@ -94,11 +94,12 @@ class Corner_attribute_carrier {
   bool keeps_uv_orientation(const Profile& profile, const Point& placement) const {
     if (!m_attributes.uvs) return true;
     const auto& uvs = *m_attributes.uvs;
-    for (const Corner_value& value : new_corner_values(profile, placement)) {
+    for (const Corner_value& value : corner_values_of(profile, placement)) {
       const Halfedge h = value.corner;
       const Uv& b = uvs[m_mesh->next(h)];
       const Uv& c = uvs[m_mesh->prev(h)];
-      const double before = uv_area(uvs[h], b, c), after = uv_area(value.uv, b, c);
+      const double before = Attributes::uv_area(uvs[h], b, c),
+                   after = Attributes::uv_area(value.uv, b, c);
       if (std::isfinite(before) && before != 0 && !(before * after > 0)) return false;
     }
     return true;
@@ -112,7 +113,7 @@ class Corner_attribute_carrier {
     if (m_solver.before_collapse) m_solver.before_collapse(profile.v0_v1());
     m_unmoved.clear();  // the zero-length collapses are over
     m_pending.clear();
-    for (const Corner_value& value : new_corner_values(profile, placement)) {
+    for (const Corner_value& value : corner_values_of(profile, placement)) {
       const Halfedge h = value.corner, b = m_mesh->next(h), c = m_mesh->prev(h);
       Pending_face pending{value.face,
                            {value, stored_value(b), stored_value(c)},
@@ -125,6 +126,7 @@ class Corner_attribute_carrier {
   // filter or OnCollapsing (Edge_collapse.h, collect()). Such a collapse moves no point, so every
   // face around it keeps its values: they are recorded here and put back by collapsed().
   void started() {
+    m_checked.reset();
     m_unmoved.clear();
     for (auto e : m_mesh->edges()) {
       const Halfedge h = m_mesh->halfedge(e);
@@ -137,6 +139,7 @@ class Corner_attribute_carrier {
 
   // After the collapse: the corners of the faces around the kept vertex take their values.
   void collapsed(Vertex kept) {
+    m_checked.reset();
     forget_seam_edges_around(kept);
     if (m_pending.empty()) {  // a zero-length collapse (started())
       restore_unmoved(kept);
@@ -156,18 +159,7 @@ class Corner_attribute_carrier {
     m_pending.clear();
   }
 
-  // Whether the values on the two sides of the edge of `h` differ at either end (or it is a
-  // border).
-  bool is_seam_edge(Halfedge h) const {
-    const Halfedge o = m_mesh->opposite(h);
-    if (m_mesh->is_border(h) || m_mesh->is_border(o)) return true;
-    return !same_values(h, m_mesh->prev(o)) || !same_values(m_mesh->prev(h), o);
-  }
-
-  // Twice the signed area of a texture triangle: positive when it turns counterclockwise.
-  static double uv_area(const Uv& a, const Uv& b, const Uv& c) {
-    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-  }
+  bool is_seam_edge(Halfedge h) const { return m_attributes.is_seam_edge(*m_mesh, h); }
 
   // Remembered per vertex (every collapse asks twice or more), and forgotten around each collapse
   // (collapsed()): only the edges at the kept vertex change.
@@ -262,19 +254,19 @@ class Corner_attribute_carrier {
       m_seam_counts[std::size_t(m_mesh->source(h))] = kUnknown;
   }
 
-  static bool same_number(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
+  // The filter and then OnCollapsing ask for the values of the same collapse, with no change to the
+  // mesh in between: the last answer is kept until the next collapse.
+  struct Checked_collapse {
+    Halfedge edge;
+    Point placement;
+    std::vector<Corner_value> values;
+  };
 
-  bool same_values(Halfedge a, Halfedge b) const {
-    if (m_attributes.uvs) {
-      const Uv &u = (*m_attributes.uvs)[a], &v = (*m_attributes.uvs)[b];
-      if (!same_number(u[0], v[0]) || !same_number(u[1], v[1])) return false;
-    }
-    if (m_attributes.normals) {
-      const Vector &m = (*m_attributes.normals)[a], &n = (*m_attributes.normals)[b];
-      for (int i = 0; i < 3; ++i)
-        if (!same_number(m[i], n[i])) return false;
-    }
-    return true;
+  template <class Profile>
+  const std::vector<Corner_value>& corner_values_of(const Profile& profile, const Point& x) const {
+    if (!m_checked || m_checked->edge != profile.v0_v1() || !(m_checked->placement == x))
+      m_checked = Checked_collapse{profile.v0_v1(), x, new_corner_values(profile, x)};
+    return m_checked->values;
   }
 
   template <class Profile>
@@ -398,6 +390,7 @@ class Corner_attribute_carrier {
   std::vector<Pending_face> m_pending;
   std::map<Face, Face_values> m_unmoved;  // faces around edges of zero length, until the loop
   mutable std::vector<std::size_t> m_seam_counts;  // kUnknown until asked
+  mutable std::optional<Checked_collapse> m_checked;
 };
 
 }  // namespace cgal_policies

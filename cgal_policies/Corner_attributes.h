@@ -1,4 +1,5 @@
-// Attributes on the corners of a CGAL::Surface_mesh. The corner of face(h) at target(h) is the
+// Attributes on the corners of a CGAL::Surface_mesh, and the read-only facts about them: seam
+// edges, texture areas, the texture's extent. The corner of face(h) at target(h) is the
 // halfedge h, so texture coordinates and normals are halfedge property maps, and a vertex whose
 // corners disagree lies on a seam. A face's material is a face property map (an index into the
 // material names that the file kept). A corner without a value holds NaN; a face without a
@@ -10,6 +11,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -66,11 +68,59 @@ class Corner_attributes {
   bool any() const { return uvs || normals || materials; }
   bool any_corner_values() const { return uvs || normals; }
 
+  // Whether the values on the two sides of the edge of `h` differ at either end, or it is a border:
+  // a seam edge.
+  bool is_seam_edge(const Mesh& mesh, typename Mesh::Halfedge_index h) const {
+    const auto o = mesh.opposite(h);
+    if (mesh.is_border(h) || mesh.is_border(o)) return true;
+    return !same_values(h, mesh.prev(o)) || !same_values(mesh.prev(h), o);
+  }
+
+  // Twice the signed area of a texture triangle: positive when it turns counterclockwise.
+  static double uv_area(const Uv& a, const Uv& b, const Uv& c) {
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+  }
+  // That of face f's texture triangle; needs the texture coordinate map.
+  double face_uv_area(const Mesh& mesh, typename Mesh::Face_index f) const {
+    const auto h = mesh.halfedge(f);
+    return uv_area((*uvs)[h], (*uvs)[mesh.next(h)], (*uvs)[mesh.prev(h)]);
+  }
+
+  // The diagonal of the bounding box of the finite texture coordinates; 0 without any.
+  double uv_extent(const Mesh& mesh) const {
+    if (!uvs) return 0;
+    Uv low{kNone, kNone}, high{kNone, kNone};
+    for (auto h : mesh.halfedges()) {
+      const Uv& uv = (*uvs)[h];
+      if (mesh.is_border(h) || !std::isfinite(uv[0]) || !std::isfinite(uv[1])) continue;
+      for (int d = 0; d < 2; ++d) {
+        low[d] = std::fmin(low[d], uv[d]);  // fmin and fmax skip the NaN they start from
+        high[d] = std::fmax(high[d], uv[d]);
+      }
+    }
+    return std::isfinite(low[0]) ? std::hypot(high[0] - low[0], high[1] - low[1]) : 0;
+  }
+
   std::optional<Uv_map> uvs;
   std::optional<Normal_map> normals;
   std::optional<Material_map> materials;
 
  private:
+  static bool same_number(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
+
+  bool same_values(typename Mesh::Halfedge_index a, typename Mesh::Halfedge_index b) const {
+    if (uvs) {
+      const Uv &u = (*uvs)[a], &v = (*uvs)[b];
+      if (!same_number(u[0], v[0]) || !same_number(u[1], v[1])) return false;
+    }
+    if (normals) {
+      const Vector &m = (*normals)[a], &n = (*normals)[b];
+      for (int i = 0; i < 3; ++i)
+        if (!same_number(m[i], n[i])) return false;
+    }
+    return true;
+  }
+
   static constexpr const char* kUvName = "h:cgal_policies:uv";
   static constexpr const char* kNormalName = "h:cgal_policies:normal";
   static constexpr const char* kMaterialName = "f:cgal_policies:material";

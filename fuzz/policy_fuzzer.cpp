@@ -56,12 +56,6 @@ void paint_corner_attributes(apps::Mesh& mesh, std::uint8_t mode) {
   }
 }
 
-double uv_area(const apps::Mesh& mesh, const Attributes& attributes, apps::Mesh::Face_index f) {
-  const auto h = mesh.halfedge(f);
-  return Carrier::uv_area((*attributes.uvs)[h], (*attributes.uvs)[mesh.next(h)],
-                          (*attributes.uvs)[mesh.prev(h)]);
-}
-
 // The texture orientation of every face and the points of the seam corners, before a run.
 struct Seam_record {
   std::map<apps::Mesh::Face_index, double> uv_areas;
@@ -72,7 +66,7 @@ Seam_record record_seams(apps::Mesh& mesh) {
   Seam_record record;
   const Attributes attributes(mesh);
   if (!attributes.uvs) return record;
-  for (const auto f : mesh.faces()) record.uv_areas[f] = uv_area(mesh, attributes, f);
+  for (const auto f : mesh.faces()) record.uv_areas[f] = attributes.face_uv_area(mesh, f);
   const Carrier carrier(mesh);
   for (const auto v : mesh.vertices()) {
     const std::size_t seams = carrier.seam_edges_at(v);
@@ -88,7 +82,7 @@ void require_seams_kept(const apps::Mesh& mesh, const Seam_record& record, const
     for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh))
       require(std::isfinite((*attributes.uvs)[h][0]) && std::isfinite((*attributes.uvs)[h][1]),
               run + ": finite texture coordinates");
-    const double before = record.uv_areas.at(f), after = uv_area(mesh, attributes, f);
+    const double before = record.uv_areas.at(f), after = attributes.face_uv_area(mesh, f);
     require(before == 0 || before * after > 0, run + ": no texture triangle turned over");
   }
   std::set<apps::Point> points;

@@ -162,19 +162,6 @@ TEST(MeshError, FaceSamplesKnowTheirFaceAndWeights) {
 using Attributes = cgal_policies::Corner_attributes<Point>;
 constexpr std::size_t kAttributeSamples = 20000;
 
-// flat_grid(4) with texture coordinates (x, y) / 4, whose extent is sqrt(2); normals +z when
-// asked.
-Mesh textured_plane(bool with_normals) {
-  Mesh mesh = flat_grid(4);
-  paint_corners(
-      mesh,
-      [](Mesh::Face_index, const Point& p) {
-        return std::array<double, 2>{p.x() / 4, p.y() / 4};
-      },
-      with_normals);
-  return mesh;
-}
-
 TEST(AttributeError, ATexturedPlaneAgainstItselfHasNone) {
   const Mesh plane = textured_plane(true);
   const apps::Attribute_error e = apps::measure_attribute_error(plane, plane, kAttributeSamples);

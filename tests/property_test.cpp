@@ -562,17 +562,11 @@ TEST(CarriedAttributes, ALinearFieldOnAFlatMeshIsReproducedExactly) {
 
 // CGAL collapses every edge of zero length first, with no placement, filter or OnCollapsing; such a
 // collapse moves no point, and every face around it keeps the values it had at each vertex
-// (Corner_attribute_carrier::started). The grid's vertex (1, 1) is moved onto (2, 1), its
+// (Corner_attribute_carrier::started). The textured plane's vertex (1, 1) is moved onto (2, 1), its
 // coordinates painted where it was.
 TEST(CarriedAttributes, AZeroLengthEdgeCollapsesWithEveryFaceKeepingItsValues) {
   for (const std::string& policy : kCarryingPolicies) {
-    Mesh mesh = flat_grid(4);
-    paint_corners(
-        mesh,
-        [](Mesh::Face_index, const Point& p) {
-          return std::array<double, 2>{p.x() / 4, p.y() / 4};
-        },
-        false);
+    Mesh mesh = textured_plane(false);
     mesh.point(Mesh::Vertex_index(6)) = Point(2, 1, 0);
     const Attributes attributes(mesh);
     const auto corner_uvs = [&](Mesh::Face_index f) {

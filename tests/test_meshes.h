@@ -3,7 +3,6 @@
 #ifndef CGAL_POLICIES_TESTS_TEST_MESHES_H
 #define CGAL_POLICIES_TESTS_TEST_MESHES_H
 
-#include <cgal_policies/Corner_attribute_carrier.h>
 #include <cgal_policies/Corner_attributes.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -173,10 +172,20 @@ void paint_corners(Mesh& mesh, const Uv_of& uv_of, bool with_normals) {
 
 // Twice the signed area of a face's texture triangle.
 inline double uv_area(const Mesh& mesh, Mesh::Face_index f) {
-  const cgal_policies::Corner_attributes<Point> attributes(mesh);
-  const auto h = halfedge(f, mesh);
-  return cgal_policies::Corner_attribute_carrier<Point>::uv_area(
-      (*attributes.uvs)[h], (*attributes.uvs)[next(h, mesh)], (*attributes.uvs)[prev(h, mesh)]);
+  return cgal_policies::Corner_attributes<Point>(mesh).face_uv_area(mesh, f);
+}
+
+// flat_grid(4) with texture coordinates (x, y) / 4, whose extent is sqrt(2); normals +z when
+// asked.
+inline Mesh textured_plane(bool with_normals) {
+  Mesh mesh = flat_grid(4);
+  paint_corners(
+      mesh,
+      [](Mesh::Face_index, const Point& p) {
+        return std::array<double, 2>{p.x() / 4, p.y() / 4};
+      },
+      with_normals);
+  return mesh;
 }
 
 using Profile = CGAL::Surface_mesh_simplification::Edge_profile<

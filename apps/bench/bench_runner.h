@@ -105,15 +105,7 @@ void for_each_field(const Run_record& r, Visitor&& visit) {
   visit("fit_seconds", r.fit_seconds);
   visit("fit_flips", r.fit_flips);
   visit("attributes", r.attributes);
-  visit("uv_mean_rel", r.attribute_error.uv_mean_rel);
-  visit("uv_max_rel", r.attribute_error.uv_max_rel);
-  visit("normal_angle_mean_deg", r.attribute_error.normal_angle_mean_deg);
-  visit("normal_angle_max_deg", r.attribute_error.normal_angle_max_deg);
-  visit("seam_edges_a", r.attribute_error.seam_edges_a);
-  visit("seam_edges_b", r.attribute_error.seam_edges_b);
-  visit("seam_loops_a", r.attribute_error.seam_loops_a);
-  visit("seam_loops_b", r.attribute_error.seam_loops_b);
-  visit("flipped_uv_faces", r.attribute_error.flipped_uv_faces);
+  for_each_field(r.attribute_error, visit);
 }
 
 // The mean error of a record in both directions, averaged, relative to the diagonal: the figure the

@@ -1,6 +1,5 @@
 #include "mesh_measures.h"
 
-#include <cgal_policies/Corner_attribute_carrier.h>
 #include <cgal_policies/Corner_attributes.h>
 #include <cgal_policies/internal/triangle_closest_point.h>
 
@@ -199,7 +198,6 @@ Mesh_error measure_mesh_error(const Mesh& a, const Mesh& b, std::size_t samples)
 namespace {
 
 using Attributes = cgal_policies::Corner_attributes<Point>;
-using Carrier = cgal_policies::Corner_attribute_carrier<Point>;
 using Uv = Attributes::Uv;
 using Vector = Kernel::Vector_3;
 constexpr double kNone = Attributes::kNone;
@@ -239,24 +237,6 @@ Vector interpolated_normal(const Attributes::Normal_map& normals,
   return length > 0 ? sum / length : Vector(kNone, kNone, kNone);
 }
 
-double face_uv_area(const Mesh& mesh, const Attributes::Uv_map& uvs, Mesh::Face_index f) {
-  const auto c = corners_of(f, mesh);
-  return Carrier::uv_area(uvs[c[0]], uvs[c[1]], uvs[c[2]]);
-}
-
-// The diagonal of the bounding box of the mesh's texture coordinates.
-double uv_extent(const Mesh& mesh, const Attributes::Uv_map& uvs) {
-  std::array<double, 2> low{kNone, kNone}, high{kNone, kNone};
-  for (auto h : halfedges(mesh)) {
-    if (mesh.is_border(h) || !std::isfinite(uvs[h][0]) || !std::isfinite(uvs[h][1])) continue;
-    for (int d = 0; d < 2; ++d) {
-      low[d] = std::fmin(low[d], uvs[h][d]);  // fmin and fmax skip the NaN they start from
-      high[d] = std::fmax(high[d], uvs[h][d]);
-    }
-  }
-  return std::hypot(high[0] - low[0], high[1] - low[1]);
-}
-
 // The mean and the maximum of the finite values, none when there is none.
 void summarise(const std::vector<double>& values, std::optional<double>& mean,
                std::optional<double>& maximum) {
@@ -279,9 +259,8 @@ struct Seams {
 
 // Seam edges by the carrier's own rule, and their connected components.
 Seams count_seams(const Mesh& mesh) {
-  Mesh copy = mesh;  // the carrier takes a mesh it may change; here it only reads
-  const Carrier carrier(copy);
-  std::vector<std::size_t> parent(copy.num_vertices());
+  const Attributes attributes(mesh);
+  std::vector<std::size_t> parent(mesh.num_vertices());
   std::iota(parent.begin(), parent.end(), std::size_t(0));
   const auto root = [&](std::size_t i) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
@@ -289,11 +268,11 @@ Seams count_seams(const Mesh& mesh) {
   };
   std::vector<bool> on_seam(parent.size(), false);
   Seams seams;
-  for (auto e : edges(copy)) {
-    const auto h = halfedge(e, copy);
-    if (!carrier.is_seam_edge(h)) continue;
+  for (auto e : edges(mesh)) {
+    const auto h = halfedge(e, mesh);
+    if (!attributes.is_seam_edge(mesh, h)) continue;
     ++seams.edges;
-    const std::size_t s = source(h, copy), t = target(h, copy);
+    const std::size_t s = source(h, mesh), t = target(h, mesh);
     on_seam[s] = on_seam[t] = true;
     parent[root(s)] = root(t);
   }
@@ -306,8 +285,8 @@ int sign(double x) { return (x > 0) - (x < 0); }
 // B's faces whose texture triangle does not turn the way that of the A face nearest the B face's
 // centroid does (a flat B triangle against a turning A one counts; a flat A one, or a corner
 // without a value, is not judged).
-std::size_t flipped_uv_faces(const Mesh& a, const Attributes::Uv_map& uv_a, const Mesh& b,
-                             const Attributes::Uv_map& uv_b) {
+std::size_t flipped_uv_faces(const Mesh& a, const Attributes& in_a, const Mesh& b,
+                             const Attributes& in_b) {
   Face_tree tree(faces(a).first, faces(a).second, a);
   tree.accelerate_distance_queries();
   const std::vector<Mesh::Face_index> b_faces(faces(b).begin(), faces(b).end());
@@ -316,8 +295,8 @@ std::size_t flipped_uv_faces(const Mesh& a, const Attributes::Uv_map& uv_a, cons
     const auto c = corners_of(b_faces[i], b);
     const Point centroid = CGAL::centroid(b.point(target(c[0], b)), b.point(target(c[1], b)),
                                           b.point(target(c[2], b)));
-    const double area_a = face_uv_area(a, uv_a, tree.closest_point_and_primitive(centroid).second);
-    const double area_b = face_uv_area(b, uv_b, b_faces[i]);
+    const double area_a = in_a.face_uv_area(a, tree.closest_point_and_primitive(centroid).second);
+    const double area_b = in_b.face_uv_area(b, b_faces[i]);
     if (!std::isfinite(area_a) || !std::isfinite(area_b) || area_a == 0) return;
     flipped[i] = sign(area_b) != sign(area_a);
   });
@@ -338,9 +317,9 @@ Attribute_error measure_attribute_error(const Mesh& a, const Mesh& b, std::size_
     error.seam_loops_a = seams_a.loops;
     error.seam_loops_b = seams_b.loops;
   }
-  const double extent = in_a.uvs ? uv_extent(a, *in_a.uvs) : 0;
+  const double extent = in_a.uv_extent(a);
   const bool uvs = in_a.uvs && in_b.uvs && extent > 0, normals = in_a.normals && in_b.normals;
-  if (uvs) error.flipped_uv_faces = flipped_uv_faces(a, *in_a.uvs, b, *in_b.uvs);
+  if (uvs) error.flipped_uv_faces = flipped_uv_faces(a, in_a, b, in_b);
   if (!uvs && !normals) return error;
 
   // At each sample of A and the closest point of B: each side's interpolated value. A closest
@@ -430,19 +409,10 @@ void add_fields(Json_object& json, const Mesh_validity& v) {
   json.add("euler_characteristic", v.euler_characteristic);
 }
 
-void add_fields(Json_object& json, const Attribute_error& e) {
-  const auto add = [&json](const char* name, const auto& field) {
+void add_fields(Json_object& json, const Attribute_error& error) {
+  for_each_field(error, [&json](const char* name, const auto& field) {
     if (field) json.add(name, *field);
-  };
-  add("uv_mean_rel", e.uv_mean_rel);
-  add("uv_max_rel", e.uv_max_rel);
-  add("normal_angle_mean_deg", e.normal_angle_mean_deg);
-  add("normal_angle_max_deg", e.normal_angle_max_deg);
-  add("seam_edges_a", e.seam_edges_a);
-  add("seam_edges_b", e.seam_edges_b);
-  add("seam_loops_a", e.seam_loops_a);
-  add("seam_loops_b", e.seam_loops_b);
-  add("flipped_uv_faces", e.flipped_uv_faces);
+  });
 }
 
 }  // namespace apps

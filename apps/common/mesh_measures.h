@@ -38,7 +38,7 @@ struct Attribute_error {
   std::optional<double> uv_mean_rel, uv_max_rel;
   // Angle between the interpolated normals at the samples, in degrees.
   std::optional<double> normal_angle_mean_deg, normal_angle_max_deg;
-  // Seam edges (Corner_attribute_carrier::is_seam_edge, borders included) and their connected
+  // Seam edges (Corner_attributes::is_seam_edge, borders included) and their connected
   // components.
   std::optional<std::size_t> seam_edges_a, seam_edges_b, seam_loops_a, seam_loops_b;
   // Faces of B whose texture triangle does not turn the way the A face nearest its centroid does.
@@ -91,6 +91,21 @@ void add_fields(Json_object& json, const Mesh_error& error);
 void add_fields(Json_object& json, const Mesh_validity& validity);
 // The fields that are there, none for an empty one.
 void add_fields(Json_object& json, const Attribute_error& error);
+
+// Calls visit(name, field) for every field of `error`, each a std::optional, in the order of the
+// JSON and of simplify_bench's CSV columns.
+template <typename Visitor>
+void for_each_field(const Attribute_error& error, Visitor&& visit) {
+  visit("uv_mean_rel", error.uv_mean_rel);
+  visit("uv_max_rel", error.uv_max_rel);
+  visit("normal_angle_mean_deg", error.normal_angle_mean_deg);
+  visit("normal_angle_max_deg", error.normal_angle_max_deg);
+  visit("seam_edges_a", error.seam_edges_a);
+  visit("seam_edges_b", error.seam_edges_b);
+  visit("seam_loops_a", error.seam_loops_a);
+  visit("seam_loops_b", error.seam_loops_b);
+  visit("flipped_uv_faces", error.flipped_uv_faces);
+}
 
 }  // namespace apps
 
