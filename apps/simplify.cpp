@@ -34,9 +34,9 @@ namespace {
 void print_help() {
   std::cout
       << "usage: simplify IN OUT [RATIO] [options]\n"
-         "Simplifies the triangle mesh IN (.off .obj .ply .stl) and writes OUT. An OBJ OUT\n"
-         "keeps IN's texture coordinates, normals and materials, seams included (hausdorff\n"
-         "and fast keep the materials alone).\n\n"
+         "Simplifies the triangle mesh IN (.off .obj .ply .stl) and writes OUT. An OBJ or\n"
+         "PLY OUT keeps IN's texture coordinates, normals and colours, seams included, and\n"
+         "an OBJ OUT its materials (hausdorff and fast keep the materials alone).\n\n"
          "  RATIO, --ratio R      keep this fraction of the faces, 0 < R <= 1\n"
          "  --faces N             keep N faces instead\n"
          "  --policy NAME         "
@@ -59,7 +59,8 @@ void print_help() {
       << smoothing_help() << fit_help()
       << "  --json                print one JSON object on stdout\n"
          "  --measure             also measure the two-sided error against IN, and the\n"
-         "                        error of the carried texture coordinates and normals\n"
+         "                        error of the carried texture coordinates, normals and\n"
+         "                        colours\n"
          "  --samples N           face samples per direction for --measure (default "
       << kDefaultErrorSamples
       << ")\n"
@@ -159,7 +160,7 @@ int run(int argc, char** argv) {
 
   Read_report read_report;
   const Stopwatch reading;
-  // Only an OBJ output can hold texture coordinates, normals and materials.
+  // Only an OBJ or PLY output can hold texture coordinates, normals and colours.
   Mesh mesh = read_triangle_mesh(input, &read_report,
                                  writes_corner_attributes(output) ? Corner_attribute_reading::keep
                                                                   : Corner_attribute_reading::drop);
@@ -193,7 +194,7 @@ int run(int argc, char** argv) {
   mesh.collect_garbage();
   const char* attributes = settle_corner_attributes(mesh, input_had_corner_values, outcome);
   if (!quiet && std::string(attributes) == "dropped")
-    std::cerr << "simplify: " << input << ": texture coordinates and normals dropped (the "
+    std::cerr << "simplify: " << input << ": texture coordinates, normals and colours dropped (the "
               << policy->name << " policy cannot carry them)\n";
   const Dropped_components vanished =
       request.drop_small_pieces && outcome.stop_reason == Stop_reason::no_collapse_left

@@ -6,6 +6,7 @@
 #include "common/App_error.h"
 #include "common/clean_triangle_soup.h"
 #include "common/mesh_io.h"
+#include "common/mesh_measures.h"
 #include "common/obj_writer.h"
 #include "common/polygon_crossing.h"
 #include "common/small_components.h"
@@ -1134,6 +1135,52 @@ TEST(CornerAttributes, PlyVertexNormalsAndTextureCoordinatesGoToEveryCorner) {
   }
 }
 
+// Colours of PLY vertices (integer channels scaled by their type's largest value, float ones kept,
+// alpha 1 when absent) and of OBJ points (r g b [a]) become the values of every corner of their
+// vertex; one that is not finite is bad input.
+TEST(CornerAttributes, PlyAndObjVertexColoursGoToEveryCorner) {
+  const std::string triangle_faces = "element face 1\nproperty list uchar int vertex_indices\n";
+  const apps::Polygon_soup bytes = apps::parse_ply(
+      "f",
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n" +
+          triangle_faces + "end_header\n0 0 0 255 0 51\n1 0 0 0 255 0\n0 1 0 0 0 255\n3 0 1 2\n");
+  EXPECT_EQ(bytes.corners.colors,
+            (std::vector<std::array<double, 4>>{{1, 0, 0.2, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}}));
+  EXPECT_EQ(bytes.corners.polygon_colors, bytes.polygons);
+  const auto float_ply = [&](const std::string& first_red) {
+    return "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+           "property float z\nproperty float diffuse_red\nproperty float diffuse_green\n"
+           "property float diffuse_blue\nproperty float diffuse_alpha\n" +
+           triangle_faces + "end_header\n0 0 0 " + first_red +
+           " 0 0 0.5\n1 0 0 0 0.25 0 1\n0 1 0 0 0 1 1\n3 0 1 2\n";
+  };
+  EXPECT_EQ(apps::parse_ply("f", float_ply("0.75")).corners.colors,
+            (std::vector<std::array<double, 4>>{{0.75, 0, 0, 0.5}, {0, 0.25, 0, 1}, {0, 0, 1, 1}}));
+  const apps::Polygon_soup obj = apps::parse_obj(
+      "f", "v 0 0 0 1 0 0\nv 1 0 0 0 1 0 0.5\nv 0 1 0\nv 1 1 0 1\nf 1 2 3\nf 2 4 3\n");
+  ASSERT_EQ(obj.corners.colors.size(), 4u);
+  EXPECT_EQ(obj.corners.colors[0], (std::array<double, 4>{1, 0, 0, 1}));
+  EXPECT_EQ(obj.corners.colors[1], (std::array<double, 4>{0, 1, 0, 0.5}));
+  for (const std::size_t without : {2, 3})  // no colour, and a w
+    for (const double channel : obj.corners.colors[without]) EXPECT_TRUE(std::isnan(channel));
+  EXPECT_EQ(obj.corners.polygon_colors, obj.polygons);
+
+  const auto cause = [](auto&& parse) {
+    try {
+      parse();
+    } catch (const apps::App_error& e) {
+      EXPECT_EQ(e.code(), apps::exit_bad_input);
+      return std::string(e.what());
+    }
+    return std::string("read");
+  };
+  EXPECT_EQ(cause([&] { apps::parse_ply("f", float_ply("nan")); }),
+            "f: vertex 0: its colour is not finite");
+  EXPECT_EQ(cause([] { apps::parse_obj("f", "v 0 0 0 1 red 0\n"); }),
+            "f: line 1: a vertex's colour needs three or four finite numbers");
+}
+
 TEST(CornerAttributes, BadEntriesAreOneBadInputLine) {
   const auto cause = [](const std::string& bytes) {
     try {
@@ -1159,7 +1206,7 @@ TEST(CornerAttributes, BadEntriesAreOneBadInputLine) {
 
 // Each face's corners as (point, uv, normal), starting at the lowest point, and its material.
 struct Face_corners {
-  std::vector<std::array<double, 8>> corners;
+  std::vector<std::array<double, 12>> corners;
   std::uint32_t material;
   bool operator==(const Face_corners& o) const {
     // NaN marks a corner without a value: compare bit patterns, not numbers.
@@ -1178,7 +1225,9 @@ std::vector<Face_corners> face_corners(const Mesh& mesh) {
       const Attributes::Uv uv = a.uvs ? (*a.uvs)[h] : Attributes::Uv{-1, -1};
       const apps::Kernel::Vector_3 n =
           a.normals ? (*a.normals)[h] : apps::Kernel::Vector_3(-1, -1, -1);
-      face.corners.push_back({p.x(), p.y(), p.z(), uv[0], uv[1], n.x(), n.y(), n.z()});
+      const Attributes::Color c = a.colors ? (*a.colors)[h] : Attributes::Color{-1, -1, -1, -1};
+      face.corners.push_back(
+          {p.x(), p.y(), p.z(), uv[0], uv[1], n.x(), n.y(), n.z(), c[0], c[1], c[2], c[3]});
     }
     std::rotate(face.corners.begin(), std::min_element(face.corners.begin(), face.corners.end()),
                 face.corners.end());
@@ -1285,11 +1334,42 @@ TEST(CornerAttributes, ShippedTexturedMeshesRoundTripExactly) {
   fs::remove_all(folder);
 }
 
+// A mesh with texture coordinates, normals and colours, seams everywhere, written as PLY (a vertex
+// per wedge) reads back as the same mesh, every corner's values exact and each seam whole.
+TEST(CornerAttributes, PlyWrittenWithItsWedgesReadsBackExactly) {
+  Mesh cube = test_meshes::six_sided_cube();
+  test_meshes::paint_corners(
+      cube,
+      [&](Mesh::Face_index f, const apps::Point& p) {
+        return test_meshes::cube_chart(test_meshes::cube_side(cube, f), p);
+      },
+      true);
+  test_meshes::paint_colors(cube, [&](Mesh::Face_index f, const apps::Point& p) {
+    // Whole steps of 1/255, which a byte holds exactly.
+    return std::array<double, 4>{test_meshes::cube_side(cube, f) * 40 / 255.0, p.x() * 60 / 255.0,
+                                 1, 1};
+  });
+  const fs::path folder = scratch_folder("ply_wedges");
+  const std::string path = (folder / "cube.ply").string();
+  apps::write_mesh_atomically(cube, path);
+  const apps::Polygon_soup soup = apps::parse_ply(path, read_text(path));
+  // A vertex per side it lies on: 3 at each of the 8 corners, 2 along the 12 edges' 3 inner
+  // points, 1 at the 9 inner points of each side.
+  EXPECT_EQ(soup.points.size(), 8u * 3 + 12u * 3 * 2 + 6u * 9);
+  const Mesh reread = apps::read_triangle_mesh(path, nullptr, apps::Corner_attribute_reading::keep);
+  EXPECT_EQ(reread.number_of_vertices(), cube.number_of_vertices());
+  EXPECT_TRUE(CGAL::is_closed(reread));
+  EXPECT_EQ(face_corners(reread), face_corners(cube));
+  // Every edge of the cube is a seam: 12 edges of 4 segments.
+  EXPECT_EQ(apps::measure_attribute_error(cube, reread, 1000).seam_edges_b, 48u);
+  fs::remove_all(folder);
+}
+
 TEST_F(Cli, SimplifyCarriesTextureCoordinatesIntoAnObjOrSaysItDropsThem) {
   // A flat 6 x 6 grid whose texture coordinates are its x and y over 6: a linear field, which
   // every carried collapse reproduces.
   Mesh grid = test_meshes::flat_grid(6);
-  const Attributes painted = Attributes::add(grid, true, false, false);
+  const Attributes painted = Attributes::add(grid, {true, false, false, false});
   for (const auto h : grid.halfedges())
     if (!grid.is_border(h))
       (*painted.uvs)[h] = {grid.point(grid.target(h)).x() / 6, grid.point(grid.target(h)).y() / 6};
@@ -1328,9 +1408,9 @@ TEST_F(Cli, SimplifyCarriesTextureCoordinatesIntoAnObjOrSaysItDropsThem) {
   EXPECT_NE(dropped.out.find("\"attributes\": \"dropped\""), std::string::npos) << dropped.out;
   EXPECT_EQ(dropped.out.find("\"uv_"), std::string::npos) << dropped.out;  // nothing to compare
   EXPECT_EQ(dropped.out.find("\"seam_"), std::string::npos) << dropped.out;
-  EXPECT_NE(
-      dropped.err.find("texture coordinates and normals dropped (the fast policy cannot carry"),
-      std::string::npos)
+  EXPECT_NE(dropped.err.find(
+                "texture coordinates, normals and colours dropped (the fast policy cannot carry"),
+            std::string::npos)
       << dropped.err;
   EXPECT_FALSE(Attributes(apps::read_triangle_mesh(out.string(), nullptr,
                                                    apps::Corner_attribute_reading::keep))

@@ -5,6 +5,7 @@
 #include "clean_triangle_soup.h"
 #include "declared_counts.h"
 #include "obj_writer.h"
+#include "ply_writer.h"
 #include "polygon_crossing.h"
 #include "soup_readers.h"
 
@@ -131,7 +132,7 @@ using Attributes = cgal_policies::Corner_attributes<Point>;
 
 bool has_corner_attributes(const Corner_tables* corners) {
   return corners && (!corners->polygon_uvs.empty() || !corners->polygon_normals.empty() ||
-                     !corners->polygon_materials.empty());
+                     !corners->polygon_colors.empty() || !corners->polygon_materials.empty());
 }
 
 // Puts the attributes of `corners` on the mesh built from `polygons`, whose face i is polygon i
@@ -139,9 +140,12 @@ bool has_corner_attributes(const Corner_tables* corners) {
 void set_corner_attributes(Mesh& mesh, const std::vector<Polygon>& polygons,
                            const Corner_tables& corners,
                            const std::vector<Mesh::Vertex_index>& vertex_of_point) {
-  const Attributes attributes =
-      Attributes::add(mesh, !corners.polygon_uvs.empty(), !corners.polygon_normals.empty(),
-                      !corners.polygon_materials.empty());
+  Attributes::Kinds kinds;
+  kinds.uvs = !corners.polygon_uvs.empty();
+  kinds.normals = !corners.polygon_normals.empty();
+  kinds.colors = !corners.polygon_colors.empty();
+  kinds.materials = !corners.polygon_materials.empty();
+  const Attributes attributes = Attributes::add(mesh, kinds);
   for (std::size_t f = 0; f < polygons.size(); ++f) {
     const Mesh::Face_index face(static_cast<Mesh::size_type>(f));
     if (attributes.materials) (*attributes.materials)[face] = corners.polygon_materials[f];
@@ -152,6 +156,8 @@ void set_corner_attributes(Mesh& mesh, const std::vector<Polygon>& polygons,
         (*attributes.uvs)[h] = corners.uvs[corners.polygon_uvs[f][k]];
       if (attributes.normals && corners.polygon_normals[f][k] != Corner_tables::kNoEntry)
         (*attributes.normals)[h] = corners.normals[corners.polygon_normals[f][k]];
+      if (attributes.colors && corners.polygon_colors[f][k] != Corner_tables::kNoEntry)
+        (*attributes.colors)[h] = corners.colors[corners.polygon_colors[f][k]];
     }
   }
 }
@@ -161,18 +167,16 @@ void set_corner_attributes(Mesh& mesh, const std::vector<Polygon>& polygons,
 class Corner_attribute_copier : public PMP::Triangulate_faces::Default_visitor<Mesh> {
  public:
   Corner_attribute_copier(Mesh& mesh, const Attributes& attributes)
-      : m_record(std::make_shared<Record>(Record{&mesh, attributes, {}, {}, {}, {}})) {}
+      : m_record(std::make_shared<Record>(Record{&mesh, attributes, {}, {}, {}})) {}
 
   void before_subface_creations(Mesh::Face_index polygon) {
     Record& r = *m_record;
     r.vertices.clear();
-    r.uvs.clear();
-    r.normals.clear();
+    r.values.clear();
     r.material = r.attributes.materials ? (*r.attributes.materials)[polygon] : 0;
     for (const auto h : CGAL::halfedges_around_face(r.mesh->halfedge(polygon), *r.mesh)) {
       r.vertices.push_back(r.mesh->target(h));
-      if (r.attributes.uvs) r.uvs.push_back((*r.attributes.uvs)[h]);
-      if (r.attributes.normals) r.normals.push_back((*r.attributes.normals)[h]);
+      r.values.push_back(r.attributes.values(h));
     }
   }
 
@@ -182,8 +186,7 @@ class Corner_attribute_copier : public PMP::Triangulate_faces::Default_visitor<M
     for (const auto h : CGAL::halfedges_around_face(r.mesh->halfedge(triangle), *r.mesh)) {
       const std::size_t k = std::size_t(
           std::find(r.vertices.begin(), r.vertices.end(), r.mesh->target(h)) - r.vertices.begin());
-      if (r.attributes.uvs) (*r.attributes.uvs)[h] = r.uvs[k];
-      if (r.attributes.normals) (*r.attributes.normals)[h] = r.normals[k];
+      r.attributes.set_values(h, r.values[k]);
     }
   }
 
@@ -192,8 +195,7 @@ class Corner_attribute_copier : public PMP::Triangulate_faces::Default_visitor<M
     Mesh* mesh;
     Attributes attributes;
     std::vector<Mesh::Vertex_index> vertices;
-    std::vector<Attributes::Uv> uvs;
-    std::vector<Kernel::Vector_3> normals;
+    std::vector<Attributes::Values> values;
     std::uint32_t material;
   };
   std::shared_ptr<Record> m_record;
@@ -255,7 +257,10 @@ Mesh repaired_triangle_mesh(const std::string& path, std::vector<Point>& points,
 
 }  // namespace
 
-bool writes_corner_attributes(const std::string& path) { return lower_extension(path) == ".obj"; }
+bool writes_corner_attributes(const std::string& path) {
+  const std::string extension = lower_extension(path);
+  return extension == ".obj" || extension == ".ply";
+}
 
 bool has_supported_mesh_extension(const std::string& path) {
   static const char* const kExtensions[] = {".off", ".obj", ".ply", ".stl"};
@@ -276,6 +281,10 @@ Mesh read_triangle_mesh(const std::string& path, Read_report* report,
                                               : parse_ply(path, bytes);
     if (attributes == Corner_attribute_reading::drop)
       return triangle_mesh_from_soup(path, soup.points, soup.polygons, report);
+    const Corner_tables& tables = soup.corners;
+    if (extension == ".ply" &&
+        !(tables.uvs.empty() && tables.normals.empty() && tables.colors.empty()))
+      join_equal_points(soup);
     Mesh mesh = triangle_mesh_from_soup(path, soup.points, soup.polygons, report, &soup.corners);
     if (report && Attributes(mesh).materials) {
       const fs::path folder = fs::absolute(path).parent_path();
@@ -331,17 +340,24 @@ void check_output_path(const std::string& input, const std::string& output, bool
 
 void write_mesh_atomically(const Mesh& mesh, const std::string& path,
                            const Material_references& materials) {
-  if (lower_extension(path) == ".obj" && Attributes(mesh).any()) {
+  const std::string extension = lower_extension(path);
+  const auto write_bytes = [&path](const std::string& bytes) {
+    write_atomically(path, [&](const std::string& temporary) {
+      std::ofstream file(temporary, std::ios::binary);
+      file.write(bytes.data(), std::streamsize(bytes.size()));
+      return bool(file.flush());
+    });
+  };
+  if (extension == ".obj" && Attributes(mesh).any()) {
     const fs::path folder = fs::absolute(path).parent_path();
     std::vector<std::string> libraries;
     for (const std::string& library : materials.libraries)
       libraries.push_back(fs::path(library).lexically_relative(folder).string());
-    const std::string text = obj_text(mesh, libraries, materials.names);
-    write_atomically(path, [&](const std::string& temporary) {
-      std::ofstream file(temporary, std::ios::binary);
-      file.write(text.data(), std::streamsize(text.size()));
-      return bool(file.flush());
-    });
+    write_bytes(obj_text(mesh, libraries, materials.names));
+    return;
+  }
+  if (extension == ".ply" && Attributes(mesh).any_corner_values()) {
+    write_bytes(ply_bytes(wedge_mesh(mesh)));
     return;
   }
   write_atomically(path, [&](const std::string& temporary) {
