@@ -36,7 +36,7 @@ void print_help() {
       << "usage: simplify IN OUT [RATIO] [options]\n"
          "Simplifies the triangle mesh IN (.off .obj .ply .stl) and writes OUT. An OBJ or\n"
          "PLY OUT keeps IN's texture coordinates, normals and colours, seams included, and\n"
-         "an OBJ OUT its materials (hausdorff and fast keep the materials alone).\n\n"
+         "an OBJ OUT its materials (fast keeps the materials alone).\n\n"
          "  RATIO, --ratio R      keep this fraction of the faces, 0 < R <= 1\n"
          "  --faces N             keep N faces instead\n"
          "  --policy NAME         "
