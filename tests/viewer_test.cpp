@@ -195,7 +195,7 @@ TEST(RenderMesh, ATexturedMeshHasAVertexPerCornerWithItsCoordinatesRowsDown) {
       },
       false);
   const apps::Render_mesh render =
-      apps::make_textured_render_mesh(grid, apps::Mesh_frame::of(Indexed_mesh::from_mesh(grid)));
+      apps::make_corner_render_mesh(grid, apps::Mesh_frame::of(Indexed_mesh::from_mesh(grid)));
   ASSERT_EQ(render.vertices.size(), 6u * apps::Render_mesh::kFloatsPerVertex);
   EXPECT_EQ(render.indices, (std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5}));
   for (std::size_t v = 0; v < 6; ++v) {
@@ -371,18 +371,9 @@ TEST_F(Snapshot, SimplifyWithABadSizeWritesNothing) {
 // A square facing the camera, textured with a 2 x 1 image, red then blue: the picture shows red on
 // the left of each square and blue on its right. A texture the material names but that is missing
 // is bad input, and nothing is written.
-TEST_F(Snapshot, ATexturedMeshIsDrawnWithItsTexture) {
-  std::ofstream(path("square.obj")) << "mtllib square.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
-                                       "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl checker\n"
-                                       "f 1/1 2/2 3/3\nf 1/1 3/3 4/4\n";
-  std::ofstream(path("square.mtl")) << "newmtl checker\nmap_Kd -clamp on red_blue.png\n";
-  const unsigned char red_blue[] = {255, 0, 0, 0, 0, 255};
-  ASSERT_NE(stbi_write_png(path("red_blue.png").c_str(), 2, 1, 3, red_blue, 6), 0);
-  ASSERT_EQ(run_simplify(path("square.obj") + " " + path("out.obj") + " 1 --snapshot " +
-                         path("square.png") + " --size 200x100"),
-            0)
-      << output_text();
-  const Picture picture = load_png(path("square.png"));
+// In both panes of a 200 x 100 picture of a square: red at a quarter of its width, blue at three
+// quarters.
+void expect_red_left_and_blue_right(const Picture& picture) {
   ASSERT_EQ(picture.width, 200);
   const int y = picture.height * 3 / 5;  // below the captions
   for (int pane = 0; pane < 2; ++pane) {
@@ -399,6 +390,21 @@ TEST_F(Snapshot, ATexturedMeshIsDrawnWithItsTexture) {
     EXPECT_GT(int(at(0.25)[0]), int(at(0.25)[2]) + 100) << "pane " << pane;
     EXPECT_GT(int(at(0.75)[2]), int(at(0.75)[0]) + 100) << "pane " << pane;
   }
+}
+
+TEST_F(Snapshot, ATexturedMeshIsDrawnWithItsTexture) {
+  std::ofstream(path("square.obj")) << "mtllib square.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+                                       "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl checker\n"
+                                       "f 1/1 2/2 3/3\nf 1/1 3/3 4/4\n";
+  std::ofstream(path("square.mtl")) << "newmtl checker\nmap_Kd -clamp on red_blue.png\n";
+  const unsigned char red_blue[] = {255, 0, 0, 0, 0, 255};
+  ASSERT_NE(stbi_write_png(path("red_blue.png").c_str(), 2, 1, 3, red_blue, 6), 0);
+  ASSERT_EQ(run_simplify(path("square.obj") + " " + path("out.obj") + " 1 --snapshot " +
+                         path("square.png") + " --size 200x100"),
+            0)
+      << output_text();
+  const Picture picture = load_png(path("square.png"));
+  expect_red_left_and_blue_right(picture);
 
   std::filesystem::remove(path("red_blue.png"));
   std::filesystem::remove(path("out.obj"));
@@ -413,6 +419,26 @@ TEST_F(Snapshot, ATexturedMeshIsDrawnWithItsTexture) {
   EXPECT_FALSE(std::filesystem::exists(path("square.png")));
   // Without a picture the texture is not needed.
   EXPECT_EQ(run_simplify(path("square.obj") + " " + path("out.obj") + " 1"), 0) << output_text();
+}
+
+// A square whose left half is red and right half blue, stored per vertex in a PLY file (the middle
+// points twice, once per colour: a colour seam once read), is drawn with its colours in both panes.
+TEST_F(Snapshot, AColouredMeshIsDrawnWithItsColours) {
+  std::ofstream(path("halves.ply"))
+      << "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\n"
+         "property float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
+         "element face 4\nproperty list uchar int vertex_indices\nend_header\n"
+         "-1 -1 0 255 0 0\n0 -1 0 255 0 0\n0 1 0 255 0 0\n-1 1 0 255 0 0\n"
+         "0 -1 0 0 0 255\n1 -1 0 0 0 255\n1 1 0 0 0 255\n0 1 0 0 0 255\n"
+         "3 0 1 2\n3 0 2 3\n3 4 5 6\n3 4 6 7\n";
+  ASSERT_EQ(run_simplify(path("halves.ply") + " " + path("out.ply") + " 1 --snapshot " +
+                         path("halves.png") + " --size 200x100"),
+            0)
+      << output_text();
+  const Picture picture = load_png(path("halves.png"));
+  expect_red_left_and_blue_right(picture);
+  std::filesystem::remove(path("out.ply"));
+  std::filesystem::remove(path("halves.png"));
 }
 
 }  // namespace

@@ -65,9 +65,9 @@ Render_mesh make_render_mesh(const Indexed_mesh& mesh, const Mesh_frame& frame,
   return result;
 }
 
-Render_mesh make_textured_render_mesh(const Mesh& mesh, const Mesh_frame& frame) {
+Render_mesh make_corner_render_mesh(const Mesh& mesh, const Mesh_frame& frame) {
   const cgal_policies::Corner_attributes<Point> attributes(mesh);
-  CGAL_precondition(attributes.uvs.has_value());
+  CGAL_precondition(attributes.uvs || attributes.colors);
   std::vector<Kernel::Vector_3> normals(mesh.num_vertices(), CGAL::NULL_VECTOR);
   for (const auto f : mesh.faces()) {
     const auto h = mesh.halfedge(f);
@@ -84,11 +84,16 @@ Render_mesh make_textured_render_mesh(const Mesh& mesh, const Mesh_frame& frame)
       const Kernel::Vector_3 p = (mesh.point(v) - frame.center) * frame.scale;
       const double length = std::sqrt(normals[std::size_t(v)].squared_length());
       const Kernel::Vector_3 n = length > 0 ? normals[std::size_t(v)] / length : CGAL::NULL_VECTOR;
-      const auto& uv = (*attributes.uvs)[corner];
+      const auto values = attributes.values(corner);
       for (double x : {p.x(), p.y(), p.z(), n.x(), n.y(), n.z()})
         result.vertices.push_back(float(x));
-      result.vertices.insert(result.vertices.end(), kSurfaceColor.begin(), kSurfaceColor.end());
-      result.vertices.insert(result.vertices.end(), {float(uv[0]), float(1 - uv[1])});
+      if (attributes.colors && !std::isnan(values.color[0]))
+        for (int c = 0; c < 3; ++c) result.vertices.push_back(float(values.color[std::size_t(c)]));
+      else
+        result.vertices.insert(result.vertices.end(), kSurfaceColor.begin(), kSurfaceColor.end());
+      const bool has_uv = attributes.uvs && !std::isnan(values.uv[0]);
+      result.vertices.insert(result.vertices.end(), {has_uv ? float(values.uv[0]) : 0.0f,
+                                                     has_uv ? float(1 - values.uv[1]) : 0.0f});
       result.indices.push_back(std::uint32_t(result.indices.size()));
     }
   return result;

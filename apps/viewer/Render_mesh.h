@@ -1,7 +1,8 @@
 // What the GPU draws of one mesh: interleaved vertices (position, smooth normal, colour, texture
 // coordinate) in the frame where the original is centred at the origin with a bounding-box
 // diagonal of 1, and the triangles' indices. Optional per-vertex values colour it as a heat map; a
-// mesh with texture coordinates gets a vertex per corner, so that seams keep both sides' values.
+// mesh with texture coordinates or colours gets a vertex per corner, so that seams keep both sides'
+// values.
 #ifndef CGAL_POLICIES_APPS_VIEWER_RENDER_MESH_H
 #define CGAL_POLICIES_APPS_VIEWER_RENDER_MESH_H
 
@@ -38,8 +39,9 @@ Render_mesh make_render_mesh(const Indexed_mesh& mesh, const Mesh_frame& frame,
                              const std::vector<double>& values = {}, double max_value = 0);
 
 // The faces of `mesh` with its corners' texture coordinates (cgal_policies::Corner_attributes;
-// v turned to run downwards, as the image's rows); needs the texture coordinate map.
-Render_mesh make_textured_render_mesh(const Mesh& mesh, const Mesh_frame& frame);
+// v turned to run downwards, as the image's rows) and colours (the surface colour where there is
+// none); needs a texture coordinate or a colour map.
+Render_mesh make_corner_render_mesh(const Mesh& mesh, const Mesh_frame& frame);
 
 }  // namespace apps
 

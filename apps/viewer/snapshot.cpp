@@ -64,19 +64,18 @@ void write_snapshot(const Mesh& original, const Mesh& simplified, const Snapshot
   std::vector<std::uint8_t> pixels;
   {
     Scene_renderer renderer(gl);
-    const auto textured = [&](const Mesh& mesh) {
-      return settings.texture && cgal_policies::Corner_attributes<Point>(mesh).uvs.has_value();
+    // A pane draws the mesh's texture, or else its colours, when it has them.
+    const auto drawn_by_corner = [&](Scene_renderer::Pane pane, const Mesh& mesh) {
+      const cgal_policies::Corner_attributes<Point> attributes(mesh);
+      const bool textured = settings.texture && attributes.uvs;
+      if (!textured && !attributes.colors) return false;
+      renderer.set_mesh(pane, make_corner_render_mesh(mesh, frame));
+      if (textured) renderer.set_texture(pane, &*settings.texture);
+      return true;
     };
-    if (textured(original)) {
-      renderer.set_mesh(Scene_renderer::left, make_textured_render_mesh(original, frame));
-      renderer.set_texture(Scene_renderer::left, &*settings.texture);
-    } else {
+    if (!drawn_by_corner(Scene_renderer::left, original))
       renderer.set_mesh(Scene_renderer::left, make_render_mesh(left, frame));
-    }
-    if (textured(compact) && !settings.heat_map) {
-      renderer.set_mesh(Scene_renderer::right, make_textured_render_mesh(compact, frame));
-      renderer.set_texture(Scene_renderer::right, &*settings.texture);
-    } else {
+    if (settings.heat_map || !drawn_by_corner(Scene_renderer::right, compact)) {
       renderer.set_mesh(Scene_renderer::right,
                         make_render_mesh(right, frame, errors, captions.legend_max));
     }
