@@ -23,10 +23,11 @@ void print_help() {
                "  --samples N   random face samples per direction, fixed seed (default "
             << kDefaultErrorSamples
             << "); every vertex is sampled too\n"
-               "  --attributes  also compare the corner attributes of B with A's (OBJ files):\n"
-               "                texture coordinates relative to A's texture extent, normal\n"
-               "                angles, seams and flipped texture triangles; each figure only\n"
-               "                when both files have what it compares (docs/evaluation.md)\n"
+               "  --attributes  also compare the corner attributes of B with A's (OBJ, PLY\n"
+               "                and glTF files): texture coordinates relative to A's texture\n"
+               "                extent, normal angles, seams and flipped texture triangles;\n"
+               "                each figure only when both files have what it compares\n"
+               "                (docs/evaluation.md)\n"
                "  --json        print one JSON object on stdout\n";
 }
 

@@ -34,9 +34,10 @@ namespace {
 void print_help() {
   std::cout
       << "usage: simplify IN OUT [RATIO] [options]\n"
-         "Simplifies the triangle mesh IN (.off .obj .ply .stl) and writes OUT. An OBJ OUT\n"
-         "keeps IN's texture coordinates, normals and materials, seams included (hausdorff\n"
-         "and fast keep the materials alone).\n\n"
+         "Simplifies the triangle mesh IN (.off .obj .ply .stl .gltf .glb) and writes OUT.\n"
+         "An OBJ or glTF (.gltf .glb) OUT keeps IN's texture coordinates, normals and\n"
+         "materials, seams included (hausdorff and fast keep the materials alone); a glTF\n"
+         "OUT of a glTF IN keeps its materials' textures and images too.\n\n"
          "  RATIO, --ratio R      keep this fraction of the faces, 0 < R <= 1\n"
          "  --faces N             keep N faces instead\n"
          "  --policy NAME         "
@@ -159,7 +160,7 @@ int run(int argc, char** argv) {
 
   Read_report read_report;
   const Stopwatch reading;
-  // Only an OBJ output can hold texture coordinates, normals and materials.
+  // Only an OBJ or glTF output can hold texture coordinates, normals and materials.
   Mesh mesh = read_triangle_mesh(input, &read_report,
                                  writes_corner_attributes(output) ? Corner_attribute_reading::keep
                                                                   : Corner_attribute_reading::drop);
@@ -262,7 +263,8 @@ int run(int argc, char** argv) {
     error = measure_mesh_error(original, mesh, samples);
     add_fields(report, error);
     add_fields(report, check_mesh_validity(mesh));
-    // IN keeps its corner attributes only for an OBJ OUT; a dropping run leaves none to compare.
+    // IN keeps its corner attributes only for an OBJ or glTF OUT; a dropping run leaves none to
+    // compare.
     if (input_had_corner_values)
       add_fields(report, measure_attribute_error(original, mesh, samples));
   }
