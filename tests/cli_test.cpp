@@ -1678,6 +1678,9 @@ TEST_F(Cli, BadGltfIsOneBadInputLineAndNoOutput) {
   const float nan = std::nanf("");
   one_triangle({0, 0, 0, 1, 0, 0, 0, nan, 0}, {0, 1, 2}).write(file("nan.glb"));
   one_triangle({0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 1, 3}).write(file("index.glb"));
+  Gltf_builder raw_uvs = two_primitive_square();
+  raw_uvs.model.accessors[4].normalized = false;  // the second primitive's u16 coordinates
+  raw_uvs.write(file("raw_uvs.glb"));
   two_primitive_square().write(file("whole.glb"));
   const std::string whole = read_text(file("whole.glb"));
   write("truncated.glb", whole.substr(0, whole.size() / 2));
@@ -1688,6 +1691,8 @@ TEST_F(Cli, BadGltfIsOneBadInputLineAndNoOutput) {
   const std::map<std::string, std::string> causes = {
       {"nan.glb", "mesh 0 primitive 0: the position of vertex 2 is not finite"},
       {"index.glb", "mesh 0 primitive 0: index 3 is out of range (3 vertices)"},
+      {"raw_uvs.glb",
+       "mesh 0 primitive 1 TEXCOORD_0 (accessor 4): integer values must be normalized"},
       {"truncated.glb", "cannot parse: "},
       {"malformed.gltf", "cannot parse: "},
       {"missing_buffer.gltf", "cannot parse: "}};

@@ -139,10 +139,11 @@ double component(const unsigned char* at, int component_type, bool normalized) {
 }
 
 // The values of accessor `index`, `components` per element, after checking that it is of one of
-// the allowed component types and that the file holds every element it declares.
+// the allowed component types, normalized when of integers unless it holds indices (as the spec
+// has it), and that the file holds every element it declares.
 std::vector<double> accessor_values(const std::string& path, const tinygltf::Model& model,
                                     int index, int type, std::initializer_list<int> allowed,
-                                    const std::string& what) {
+                                    const std::string& what, bool holds_indices = false) {
   if (index < 0 || std::size_t(index) >= model.accessors.size())
     fail(path, what + ": accessor " + std::to_string(index) + " does not exist");
   const tinygltf::Accessor& accessor = model.accessors[std::size_t(index)];
@@ -150,6 +151,10 @@ std::vector<double> accessor_values(const std::string& path, const tinygltf::Mod
   if (accessor.type != type ||
       std::find(allowed.begin(), allowed.end(), accessor.componentType) == allowed.end())
     fail(path, name + ": unsupported element or component type");
+  if (accessor.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT &&
+      accessor.normalized == holds_indices)
+    fail(path, name + (holds_indices ? ": indices cannot be normalized"
+                                     : ": integer values must be normalized"));
   if (accessor.sparse.isSparse) fail(path, name + ": sparse accessors are not supported");
   if (accessor.bufferView < 0 || std::size_t(accessor.bufferView) >= model.bufferViews.size())
     fail(path, name + ": no bufferView");
@@ -252,7 +257,7 @@ class Soup_builder {
                m_path, m_model, primitive.indices, TINYGLTF_TYPE_SCALAR,
                {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
                 TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
-               what + " indices")) {
+               what + " indices", true)) {
         if (index >= double(vertices))
           fail(m_path, what + ": index " + std::to_string(std::size_t(index)) +
                            " is out of range (" + std::to_string(vertices) + " vertices)");
