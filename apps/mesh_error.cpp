@@ -1,6 +1,6 @@
 // mesh_error A B: Metro-style two-sided distances between two meshes (docs/evaluation.md), A being
 // the reference, the validity figures of B and, with --attributes, the error of B's texture
-// coordinates and normals.
+// coordinates, normals and colours.
 #include "common/App_error.h"
 #include "common/Command_line.h"
 #include "common/Json_object.h"
@@ -23,9 +23,10 @@ void print_help() {
                "  --samples N   random face samples per direction, fixed seed (default "
             << kDefaultErrorSamples
             << "); every vertex is sampled too\n"
-               "  --attributes  also compare the corner attributes of B with A's (OBJ, PLY\n"
-               "                and glTF files): texture coordinates relative to A's texture\n"
-               "                extent, normal angles, seams and flipped texture triangles;\n"
+               "  --attributes  also compare the corner attributes of B with A's (OBJ, PLY,\n"
+               "                glTF): texture coordinates relative to A's texture extent,\n"
+               "                normal angles, colour distances, seams and flipped texture\n"
+               "                triangles;\n"
                "                each figure only when both files have what it compares\n"
                "                (docs/evaluation.md)\n"
                "  --json        print one JSON object on stdout\n";
@@ -43,6 +44,11 @@ void print_attribute_error(const Attribute_error& e) {
                 *e.normal_angle_max_deg);
   else
     std::printf("normals: not in both meshes\n");
+  if (e.color_mean)
+    std::printf("colours: mean %.5f, max %.5f (RGBA distance, channels from 0 to 1)\n",
+                *e.color_mean, *e.color_max);
+  else
+    std::printf("colours: not in both meshes\n");
   if (e.seam_edges_a)
     std::printf("seam edges / connected seams: A %zu / %zu, B %zu / %zu\n", *e.seam_edges_a,
                 *e.seam_loops_a, *e.seam_edges_b, *e.seam_loops_b);

@@ -35,9 +35,10 @@ void print_help() {
   std::cout
       << "usage: simplify IN OUT [RATIO] [options]\n"
          "Simplifies the triangle mesh IN (.off .obj .ply .stl .gltf .glb) and writes OUT.\n"
-         "An OBJ or glTF (.gltf .glb) OUT keeps IN's texture coordinates, normals and\n"
-         "materials, seams included (hausdorff and fast keep the materials alone); a glTF\n"
-         "OUT of a glTF IN keeps its materials' textures and images too.\n\n"
+         "An OBJ, PLY or glTF (.gltf .glb) OUT keeps IN's texture coordinates, normals and\n"
+         "colours, seams included, and an OBJ or glTF OUT its materials (hausdorff and fast\n"
+         "keep the materials alone); a glTF OUT of a glTF IN keeps their textures and\n"
+         "images too.\n\n"
          "  RATIO, --ratio R      keep this fraction of the faces, 0 < R <= 1\n"
          "  --faces N             keep N faces instead\n"
          "  --policy NAME         "
@@ -60,7 +61,8 @@ void print_help() {
       << smoothing_help() << fit_help()
       << "  --json                print one JSON object on stdout\n"
          "  --measure             also measure the two-sided error against IN, and the\n"
-         "                        error of the carried texture coordinates and normals\n"
+         "                        error of the carried texture coordinates, normals and\n"
+         "                        colours\n"
          "  --samples N           face samples per direction for --measure (default "
       << kDefaultErrorSamples
       << ")\n"
@@ -160,7 +162,7 @@ int run(int argc, char** argv) {
 
   Read_report read_report;
   const Stopwatch reading;
-  // Only an OBJ or glTF output can hold texture coordinates, normals and materials.
+  // Only an OBJ, PLY or glTF output can hold texture coordinates, normals and colours.
   Mesh mesh = read_triangle_mesh(input, &read_report,
                                  writes_corner_attributes(output) ? Corner_attribute_reading::keep
                                                                   : Corner_attribute_reading::drop);
@@ -194,7 +196,7 @@ int run(int argc, char** argv) {
   mesh.collect_garbage();
   const char* attributes = settle_corner_attributes(mesh, input_had_corner_values, outcome);
   if (!quiet && std::string(attributes) == "dropped")
-    std::cerr << "simplify: " << input << ": texture coordinates and normals dropped (the "
+    std::cerr << "simplify: " << input << ": texture coordinates, normals and colours dropped (the "
               << policy->name << " policy cannot carry them)\n";
   const Dropped_components vanished =
       request.drop_small_pieces && outcome.stop_reason == Stop_reason::no_collapse_left
@@ -263,8 +265,8 @@ int run(int argc, char** argv) {
     error = measure_mesh_error(original, mesh, samples);
     add_fields(report, error);
     add_fields(report, check_mesh_validity(mesh));
-    // IN keeps its corner attributes only for an OBJ or glTF OUT; a dropping run leaves none to
-    // compare.
+    // IN keeps its corner attributes only for an OBJ, PLY or glTF OUT; a dropping run leaves none
+    // to compare.
     if (input_had_corner_values)
       add_fields(report, measure_attribute_error(original, mesh, samples));
   }

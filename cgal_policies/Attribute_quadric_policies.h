@@ -1,9 +1,9 @@
 // Attribute_quadric_policies: edge collapse under quadrics over position and corner attributes
 // ([GH98], [Hoppe99]; docs/attributes.md). Each vertex keeps one quadric per wedge, a wedge being
-// the corners of the vertex that share their texture coordinates and normal: a vertex on a seam has
-// several, and they merge only through the faces of the edge collapsed. A collapse between two free
-// vertices solves the new position with the attributes at their best, then the attributes at it;
-// elsewhere Corner_attribute_carrier's rules fix the point and the seam values, and the cost
+// the corners of the vertex that share their texture coordinates, normal and colour: a vertex on a
+// seam has several, and they merge only through the faces of the edge collapsed. A collapse between
+// two free vertices solves the new position with the attributes at their best, then the attributes
+// at it; elsewhere Corner_attribute_carrier's rules fix the point and the seam values, and the cost
 // measures those. Without a carrier (carry_with) it is a plain area-weighted quadric policy with
 // border planes.
 // Models CGAL's `GetCost` and `GetPlacement` in one object with `Update_tag`, for a
@@ -115,7 +115,7 @@ class Attribute_quadric_policies {
                                       const Attribute_quadric_options& options = {})
       : m_state(std::make_shared<State>(tm, options)) {
     CGAL_precondition(options.uv_weight >= 0 && options.normal_weight >= 0 &&
-                      options.border_weight >= 0);
+                      options.color_weight >= 0 && options.border_weight >= 0);
   }
 
   const Get_cost& get_cost() const { return *this; }
@@ -127,17 +127,19 @@ class Attribute_quadric_policies {
     const std::shared_ptr<State> state = m_state;
     state->carrier = &carrier;
     typename Carrier::Solver solver;
-    solver.free_collapse_values = [state](Halfedge edge, const Point& x, typename Carrier::Uv& uv,
-                                          typename Carrier::Vector& normal) {
+    solver.free_collapse_values = [state](Halfedge edge, const Point& x,
+                                          typename Carrier::Values& values) {
       const TriangleMesh& mesh = *state->mesh;
       const Attribute_quadric quadric = state->wedges[mesh.source(edge)].front().quadric +
                                         state->wedges[mesh.target(edge)].front().quadric;
       const Values s = unscaled(*state, quadric.best_attributes(internal::to_eigen(x)));
-      uv = {s[0], s[1]};
+      values.uv = {s[0], s[1]};
       const Eigen::Vector3d n = internal::unit_or_zero(Eigen::Vector3d(s[2], s[3], s[4]));
       const double none = std::numeric_limits<double>::quiet_NaN();
-      normal = n.norm() > 0 ? typename Carrier::Vector(n.x(), n.y(), n.z())
-                            : typename Carrier::Vector(none, none, none);
+      using Vector = typename Carrier::Attributes::Vector;
+      values.normal = n.norm() > 0 ? Vector(n.x(), n.y(), n.z()) : Vector(none, none, none);
+      // Solved colours may leave [0, 1] a little where the fields of the faces disagree.
+      for (int d = 0; d < 4; ++d) values.color[d] = std::clamp(s[5 + d], 0.0, 1.0);
     };
     solver.before_collapse = [state](Halfedge edge) { prepare_collapse(*state, edge); };
     carrier.solve_with(std::move(solver));
@@ -275,22 +277,13 @@ class Attribute_quadric_policies {
     return -1;
   }
 
-  // The values of a corner: texture coordinates, then normal; NaN without a carrier.
+  // The values of a corner: texture coordinates, normal, colour; NaN without a carrier.
   static Values corner_value(const State& state, Halfedge h) {
     Values value = Values::Constant(std::numeric_limits<double>::quiet_NaN());
     if (!state.carrier || state.mesh->is_border(h)) return value;
-    const auto& attributes = state.carrier->attributes();
-    if (attributes.uvs) {
-      const auto& uv = (*attributes.uvs)[h];
-      value[0] = uv[0];
-      value[1] = uv[1];
-    }
-    if (attributes.normals) {
-      const auto& n = (*attributes.normals)[h];
-      value[2] = n.x();
-      value[3] = n.y();
-      value[4] = n.z();
-    }
+    const auto corner = state.carrier->attributes().values(h);
+    value << corner.uv[0], corner.uv[1], corner.normal.x(), corner.normal.y(), corner.normal.z(),
+        corner.color[0], corner.color[1], corner.color[2], corner.color[3];
     return value;
   }
 
@@ -310,8 +303,8 @@ class Attribute_quadric_policies {
     return value;
   }
 
-  // Texture coordinates scaled so that the texture's extent spans the mesh's diagonal, normals
-  // so that a unit difference spans it, each times its weight.
+  // Texture coordinates scaled so that the texture's extent spans the mesh's diagonal, normals and
+  // colours so that a unit difference spans it, each times its weight.
   template <typename VertexPointMap>
   static Values attribute_scale(const TriangleMesh& tm, const VertexPointMap& vpm,
                                 const State& state) {
@@ -321,7 +314,8 @@ class Attribute_quadric_policies {
     const double uv_extent = state.carrier ? state.carrier->attributes().uv_extent(tm) : 0;
     Values scale = Values::Zero();
     if (uv_extent > 0) scale.head<2>().setConstant(state.options.uv_weight * diagonal / uv_extent);
-    scale.tail<3>().setConstant(state.options.normal_weight * diagonal);
+    scale.segment<3>(2).setConstant(state.options.normal_weight * diagonal);
+    scale.tail<4>().setConstant(state.options.color_weight * diagonal);
     return scale;
   }
 

@@ -1,5 +1,5 @@
-// Carries the corner attributes of a CGAL::Surface_mesh (Corner_attributes.h: texture coordinates
-// and normals) through edge collapses, and keeps their seams.
+// Carries the corner attributes of a CGAL::Surface_mesh (Corner_attributes.h: texture coordinates,
+// normals and colours) through edge collapses, and keeps their seams.
 //
 // A seam edge is one whose two sides disagree at either end, or a border edge (an open chart stays
 // open). A vertex on no seam edge is free; on exactly two it lies along a seam; on one or three and
@@ -43,7 +43,7 @@ class Corner_attribute_carrier {
   using Mesh = CGAL::Surface_mesh<Point>;
   using Attributes = Corner_attributes<Point>;
   using Uv = typename Attributes::Uv;
-  using Vector = typename Attributes::Vector;
+  using Values = typename Attributes::Values;
   using Vertex = typename Mesh::Vertex_index;
   using Halfedge = typename Mesh::Halfedge_index;
   using Face = typename Mesh::Face_index;
@@ -53,7 +53,7 @@ class Corner_attribute_carrier {
   // their old seam values; a value it leaves NaN is interpolated), and hears of each collapse
   // before it happens.
   struct Solver {
-    std::function<void(Halfedge edge, const Point& x, Uv& uv, Vector& normal)> free_collapse_values;
+    std::function<void(Halfedge edge, const Point& x, Values& values)> free_collapse_values;
     std::function<void(Halfedge edge)> before_collapse;
   };
 
@@ -99,7 +99,7 @@ class Corner_attribute_carrier {
       const Uv& b = uvs[m_mesh->next(h)];
       const Uv& c = uvs[m_mesh->prev(h)];
       const double before = Attributes::uv_area(uvs[h], b, c),
-                   after = Attributes::uv_area(value.uv, b, c);
+                   after = Attributes::uv_area(value.values.uv, b, c);
       if (std::isfinite(before) && before != 0 && !(before * after > 0)) return false;
     }
     return true;
@@ -152,8 +152,7 @@ class Corner_attribute_carrier {
         const Corner_value& value = v == kept                ? pending.corners[0]
                                     : v == pending.others[0] ? pending.corners[1]
                                                              : pending.corners[2];
-        if (m_attributes.uvs) (*m_attributes.uvs)[h] = value.uv;
-        if (m_attributes.normals) (*m_attributes.normals)[h] = value.normal;
+        m_attributes.set_values(h, value.values);
       }
     }
     m_pending.clear();
@@ -177,8 +176,7 @@ class Corner_attribute_carrier {
   struct Corner_value {
     Face face;
     Halfedge corner;  // before the collapse
-    Uv uv;
-    Vector normal;
+    Values values;
   };
   struct Pending_face {
     Face face;
@@ -187,13 +185,7 @@ class Corner_attribute_carrier {
   };
 
   Corner_value stored_value(Halfedge h) const {
-    Corner_value value{m_mesh->face(h),
-                       h,
-                       {Attributes::kNone, Attributes::kNone},
-                       Vector(Attributes::kNone, Attributes::kNone, Attributes::kNone)};
-    if (m_attributes.uvs) value.uv = (*m_attributes.uvs)[h];
-    if (m_attributes.normals) value.normal = (*m_attributes.normals)[h];
-    return value;
+    return {m_mesh->face(h), h, m_attributes.values(h)};
   }
 
   static constexpr std::size_t kUnknown = std::numeric_limits<std::size_t>::max();
@@ -239,9 +231,7 @@ class Corner_attribute_carrier {
           was = recorded_index(
               [&](Vertex r) { return std::find(now.begin(), now.end(), r) == now.end(); });
         if (was == 3) continue;
-        const Corner_value& value = recorded.values[was];
-        if (m_attributes.uvs) (*m_attributes.uvs)[h] = value.uv;
-        if (m_attributes.normals) (*m_attributes.normals)[h] = value.normal;
+        m_attributes.set_values(h, recorded.values[was].values);
       }
       record_unmoved(f);
     }
@@ -300,8 +290,7 @@ class Corner_attribute_carrier {
     const bool solved =
         m_solver.free_collapse_values && seam_edges_at(v0) == 0 && seam_edges_at(v1) == 0;
     Corner_value solved_value = stored_value(profile.v0_v1());
-    if (solved)
-      m_solver.free_collapse_values(profile.v0_v1(), x, solved_value.uv, solved_value.normal);
+    if (solved) m_solver.free_collapse_values(profile.v0_v1(), x, solved_value.values);
     std::vector<Corner_value> values;
     for (std::size_t i = 0; i < star.size(); ++i) {
       Halfedge corner;
@@ -320,14 +309,18 @@ class Corner_attribute_carrier {
       Corner_value value = solved_value;
       value.face = star[i];
       value.corner = corner;
+      Values& v = value.values;
       const bool uv_missing =
-          m_attributes.uvs && !(std::isfinite(value.uv[0]) && std::isfinite(value.uv[1]));
-      const bool normal_missing =
-          m_attributes.normals && !std::isfinite(value.normal.squared_length());
-      if (uv_missing || normal_missing) {
-        const Corner_value other = interpolated(star, root(i), x, star[i], corner, root);
-        if (uv_missing) value.uv = other.uv;
-        if (normal_missing) value.normal = other.normal;
+          m_attributes.uvs && !(std::isfinite(v.uv[0]) && std::isfinite(v.uv[1]));
+      const bool normal_missing = m_attributes.normals && !std::isfinite(v.normal.squared_length());
+      const bool color_missing =
+          m_attributes.colors &&
+          !std::all_of(v.color.begin(), v.color.end(), [](double c) { return std::isfinite(c); });
+      if (uv_missing || normal_missing || color_missing) {
+        const Values other = interpolated(star, root(i), x, star[i], corner, root).values;
+        if (uv_missing) v.uv = other.uv;
+        if (normal_missing) v.normal = other.normal;
+        if (color_missing) v.color = other.color;
       }
       values.push_back(value);
     }
@@ -360,28 +353,14 @@ class Corner_attribute_carrier {
         corners = around;
       }
     }
-    Corner_value value{face,
-                       corner,
-                       {Attributes::kNone, Attributes::kNone},
-                       Vector(Attributes::kNone, Attributes::kNone, Attributes::kNone)};
     for (int k = 0; k < 3; ++k)
-      if (weights[k] == 1) {  // at a corner of the old star: its values, exactly
-        if (m_attributes.uvs) value.uv = (*m_attributes.uvs)[corners[k]];
-        if (m_attributes.normals) value.normal = (*m_attributes.normals)[corners[k]];
-        return value;
-      }
-    if (m_attributes.uvs) {
-      value.uv = {0, 0};
-      for (int k = 0; k < 3; ++k)
-        for (int d = 0; d < 2; ++d) value.uv[d] += weights[k] * (*m_attributes.uvs)[corners[k]][d];
-    }
-    if (m_attributes.normals) {
-      Vector sum(0, 0, 0);
-      for (int k = 0; k < 3; ++k) sum = sum + weights[k] * (*m_attributes.normals)[corners[k]];
-      const double length = std::sqrt(sum.squared_length());
-      value.normal = length > 0 ? sum / length : sum;
-    }
-    return value;
+      if (weights[k] == 1)  // at a corner of the old star: its values, exactly
+        return {face, corner, m_attributes.values(corners[k])};
+    const Values blended =
+        Attributes::blend({m_attributes.values(corners[0]), m_attributes.values(corners[1]),
+                           m_attributes.values(corners[2])},
+                          weights);
+    return {face, corner, blended};
   }
 
   Mesh* m_mesh;

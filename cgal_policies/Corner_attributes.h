@@ -1,8 +1,8 @@
 // Attributes on the corners of a CGAL::Surface_mesh, and the read-only facts about them: seam
 // edges, texture areas, the texture's extent. The corner of face(h) at target(h) is the
-// halfedge h, so texture coordinates and normals are halfedge property maps, and a vertex whose
-// corners disagree lies on a seam. A face's material is a face property map (an index into the
-// material names that the file kept). A corner without a value holds NaN; a face without a
+// halfedge h, so texture coordinates, normals and colours are halfedge property maps, and a vertex
+// whose corners disagree lies on a seam. A face's material is a face property map (an index into
+// the material names that the file kept). A corner without a value holds NaN; a face without a
 // material, kNoMaterial.
 #ifndef CGAL_POLICIES_CORNER_ATTRIBUTES_H
 #define CGAL_POLICIES_CORNER_ATTRIBUTES_H
@@ -26,29 +26,94 @@ class Corner_attributes {
   using Uv = std::array<double, 2>;
   using Uv_map = typename Mesh::template Property_map<typename Mesh::Halfedge_index, Uv>;
   using Normal_map = typename Mesh::template Property_map<typename Mesh::Halfedge_index, Vector>;
+  using Color = std::array<double, 4>;  // red, green, blue and alpha, each in [0, 1]
+  using Color_map = typename Mesh::template Property_map<typename Mesh::Halfedge_index, Color>;
   using Material_map =
       typename Mesh::template Property_map<typename Mesh::Face_index, std::uint32_t>;
 
   static constexpr std::uint32_t kNoMaterial = std::numeric_limits<std::uint32_t>::max();
   static constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
 
+  // Which maps a mesh has, or is to have.
+  struct Kinds {
+    bool uvs = false, normals = false, colors = false, materials = false;
+  };
+
+  // The values of one corner; those the mesh has no map for, or that the corner lacks, are NaN.
+  struct Values {
+    Uv uv;
+    Vector normal;
+    Color color;
+  };
+
   // The maps `mesh` already has.
   explicit Corner_attributes(const Mesh& mesh)
       : uvs(find<typename Mesh::Halfedge_index, Uv>(mesh, kUvName)),
         normals(find<typename Mesh::Halfedge_index, Vector>(mesh, kNormalName)),
+        colors(find<typename Mesh::Halfedge_index, Color>(mesh, kColorName)),
         materials(find<typename Mesh::Face_index, std::uint32_t>(mesh, kMaterialName)) {}
 
   // Adds the maps asked for (and keeps those `mesh` has), every value none.
-  static Corner_attributes add(Mesh& mesh, bool with_uvs, bool with_normals, bool with_materials) {
-    if (with_uvs)
-      mesh.template add_property_map<typename Mesh::Halfedge_index, Uv>(kUvName, {kNone, kNone});
-    if (with_normals)
-      mesh.template add_property_map<typename Mesh::Halfedge_index, Vector>(
-          kNormalName, Vector(kNone, kNone, kNone));
-    if (with_materials)
+  static Corner_attributes add(Mesh& mesh, const Kinds& kinds) {
+    const Values none = no_values();
+    if (kinds.uvs)
+      mesh.template add_property_map<typename Mesh::Halfedge_index, Uv>(kUvName, none.uv);
+    if (kinds.normals)
+      mesh.template add_property_map<typename Mesh::Halfedge_index, Vector>(kNormalName,
+                                                                            none.normal);
+    if (kinds.colors)
+      mesh.template add_property_map<typename Mesh::Halfedge_index, Color>(kColorName, none.color);
+    if (kinds.materials)
       mesh.template add_property_map<typename Mesh::Face_index, std::uint32_t>(kMaterialName,
                                                                                kNoMaterial);
     return Corner_attributes(mesh);
+  }
+
+  Kinds kinds() const {
+    return {uvs.has_value(), normals.has_value(), colors.has_value(), materials.has_value()};
+  }
+
+  static Values no_values() {
+    return {{kNone, kNone}, Vector(kNone, kNone, kNone), {kNone, kNone, kNone, kNone}};
+  }
+
+  Values values(typename Mesh::Halfedge_index h) const {
+    Values v = no_values();
+    if (uvs) v.uv = (*uvs)[h];
+    if (normals) v.normal = (*normals)[h];
+    if (colors) v.color = (*colors)[h];
+    return v;
+  }
+
+  // Writes the values of the maps the mesh has.
+  void set_values(typename Mesh::Halfedge_index h, const Values& v) const {
+    if (uvs) (*uvs)[h] = v.uv;
+    if (normals) (*normals)[h] = v.normal;
+    if (colors) (*colors)[h] = v.color;
+  }
+
+  // The values at barycentric weights w of a triangle whose corners hold `corner`: texture
+  // coordinates and colours blend linearly, normals blend and are made unit again.
+  static Values blend(const std::array<Values, 3>& corner, const std::array<double, 3>& w) {
+    Values v{{0, 0}, Vector(0, 0, 0), {0, 0, 0, 0}};
+    for (int k = 0; k < 3; ++k) {
+      for (int d = 0; d < 2; ++d) v.uv[d] += w[k] * corner[k].uv[d];
+      v.normal = v.normal + w[k] * corner[k].normal;
+      for (int d = 0; d < 4; ++d) v.color[d] += w[k] * corner[k].color[d];
+    }
+    const double length = std::sqrt(v.normal.squared_length());
+    if (length > 0) v.normal = v.normal / length;
+    return v;
+  }
+
+  static bool same_values(const Values& a, const Values& b) {
+    for (int d = 0; d < 2; ++d)
+      if (!same_number(a.uv[d], b.uv[d])) return false;
+    for (int d = 0; d < 3; ++d)
+      if (!same_number(a.normal[d], b.normal[d])) return false;
+    for (int d = 0; d < 4; ++d)
+      if (!same_number(a.color[d], b.color[d])) return false;
+    return true;
   }
 
   // Removes every map of this kind from `mesh`.
@@ -58,22 +123,24 @@ class Corner_attributes {
     if (found.materials) mesh.remove_property_map(*found.materials);
   }
 
-  // Removes the texture coordinates and normals, and keeps the materials.
+  // Removes the texture coordinates, normals and colours, and keeps the materials.
   static void remove_corner_values(Mesh& mesh) {
     Corner_attributes found(mesh);
     if (found.uvs) mesh.remove_property_map(*found.uvs);
     if (found.normals) mesh.remove_property_map(*found.normals);
+    if (found.colors) mesh.remove_property_map(*found.colors);
   }
 
-  bool any() const { return uvs || normals || materials; }
-  bool any_corner_values() const { return uvs || normals; }
+  bool any() const { return any_corner_values() || materials; }
+  bool any_corner_values() const { return uvs || normals || colors; }
 
   // Whether the values on the two sides of the edge of `h` differ at either end, or it is a border:
   // a seam edge.
   bool is_seam_edge(const Mesh& mesh, typename Mesh::Halfedge_index h) const {
     const auto o = mesh.opposite(h);
     if (mesh.is_border(h) || mesh.is_border(o)) return true;
-    return !same_values(h, mesh.prev(o)) || !same_values(mesh.prev(h), o);
+    return !same_values(values(h), values(mesh.prev(o))) ||
+           !same_values(values(mesh.prev(h)), values(o));
   }
 
   // Twice the signed area of a texture triangle: positive when it turns counterclockwise.
@@ -103,26 +170,15 @@ class Corner_attributes {
 
   std::optional<Uv_map> uvs;
   std::optional<Normal_map> normals;
+  std::optional<Color_map> colors;
   std::optional<Material_map> materials;
 
  private:
   static bool same_number(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
 
-  bool same_values(typename Mesh::Halfedge_index a, typename Mesh::Halfedge_index b) const {
-    if (uvs) {
-      const Uv &u = (*uvs)[a], &v = (*uvs)[b];
-      if (!same_number(u[0], v[0]) || !same_number(u[1], v[1])) return false;
-    }
-    if (normals) {
-      const Vector &m = (*normals)[a], &n = (*normals)[b];
-      for (int i = 0; i < 3; ++i)
-        if (!same_number(m[i], n[i])) return false;
-    }
-    return true;
-  }
-
   static constexpr const char* kUvName = "h:cgal_policies:uv";
   static constexpr const char* kNormalName = "h:cgal_policies:normal";
+  static constexpr const char* kColorName = "h:cgal_policies:color";
   static constexpr const char* kMaterialName = "f:cgal_policies:material";
 
   template <class Index, class Value>

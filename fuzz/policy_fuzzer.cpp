@@ -41,10 +41,11 @@ using Attributes = cgal_policies::Corner_attributes<apps::Point>;
 using Carrier = cgal_policies::Corner_attribute_carrier<apps::Point>;
 
 // With bit 0 of `mode`: texture coordinates, a projection of the points on two axes shifted by a
-// chart number drawn per face (so seams where charts meet), and constant normals.
+// chart number drawn per face (so seams where charts meet), constant normals, and colours in
+// [0, 1] that vary with the point and the chart.
 void paint_corner_attributes(apps::Mesh& mesh, std::uint8_t mode) {
   if (!(mode & 1)) return;
-  const Attributes attributes = Attributes::add(mesh, true, true, false);
+  const Attributes attributes = Attributes::add(mesh, {true, true, true, false});
   const int axis = (mode >> 1) % 3, charts = 1 + (mode >> 3) % 4;
   for (const auto f : mesh.faces()) {
     const int chart = int((std::size_t(f) * 2654435761u >> (mode >> 5)) % std::size_t(charts));
@@ -52,6 +53,8 @@ void paint_corner_attributes(apps::Mesh& mesh, std::uint8_t mode) {
       const apps::Point& p = mesh.point(mesh.target(h));
       (*attributes.uvs)[h] = {p[axis] + 4.0 * chart, p[(axis + 1) % 3]};
       (*attributes.normals)[h] = apps::Kernel::Vector_3(0, 0, 1);
+      const auto unit = [](double x) { return std::isfinite(x) ? x - std::floor(x) : 0.5; };
+      (*attributes.colors)[h] = {unit(p.x()), unit(p.y()), chart / 4.0, 1};
     }
   }
 }
@@ -79,9 +82,12 @@ Seam_record record_seams(apps::Mesh& mesh) {
 void require_seams_kept(const apps::Mesh& mesh, const Seam_record& record, const std::string& run) {
   const Attributes attributes(mesh);
   for (const auto f : mesh.faces()) {
-    for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh))
+    for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
       require(std::isfinite((*attributes.uvs)[h][0]) && std::isfinite((*attributes.uvs)[h][1]),
               run + ": finite texture coordinates");
+      for (const double c : (*attributes.colors)[h])
+        require(c >= 0 && c <= 1, run + ": colours within [0, 1]");
+    }
     const double before = record.uv_areas.at(f), after = attributes.face_uv_area(mesh, f);
     require(before == 0 || before * after > 0, run + ": no texture triangle turned over");
   }

@@ -130,9 +130,9 @@ TEST_F(BenchQuickPreset, CsvHasOneRowPerCaseAndPolicyWithFiniteNumbers) {
                                               "stop_reason", "valid",  "closed"};
   // Without --attributes, the corner-attribute columns stay empty (BenchAttributes fills them).
   const std::set<std::string> attribute_columns = {
-      "attributes",           "uv_mean_rel",     "uv_max_rel",   "normal_angle_mean_deg",
-      "normal_angle_max_deg", "seam_edges_a",    "seam_edges_b", "seam_loops_a",
-      "seam_loops_b",         "flipped_uv_faces"};
+      "attributes",           "uv_mean_rel",  "uv_max_rel",   "normal_angle_mean_deg",
+      "normal_angle_max_deg", "color_mean",   "color_max",    "seam_edges_a",
+      "seam_edges_b",         "seam_loops_a", "seam_loops_b", "flipped_uv_faces"};
   std::set<std::pair<std::string, std::string>> cases;
   std::set<std::string> policies;
   std::set<std::vector<std::string>> runs;

@@ -7,6 +7,7 @@
 #include "common/clean_triangle_soup.h"
 #include "common/gltf_io.h"
 #include "common/mesh_io.h"
+#include "common/mesh_measures.h"
 #include "common/obj_writer.h"
 #include "common/polygon_crossing.h"
 #include "common/small_components.h"
@@ -1137,6 +1138,52 @@ TEST(CornerAttributes, PlyVertexNormalsAndTextureCoordinatesGoToEveryCorner) {
   }
 }
 
+// Colours of PLY vertices (integer channels scaled by their type's largest value, float ones kept,
+// alpha 1 when absent) and of OBJ points (r g b [a]) become the values of every corner of their
+// vertex; one that is not finite is bad input.
+TEST(CornerAttributes, PlyAndObjVertexColoursGoToEveryCorner) {
+  const std::string triangle_faces = "element face 1\nproperty list uchar int vertex_indices\n";
+  const apps::Polygon_soup bytes = apps::parse_ply(
+      "f",
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n" +
+          triangle_faces + "end_header\n0 0 0 255 0 51\n1 0 0 0 255 0\n0 1 0 0 0 255\n3 0 1 2\n");
+  EXPECT_EQ(bytes.corners.colors,
+            (std::vector<std::array<double, 4>>{{1, 0, 0.2, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}}));
+  EXPECT_EQ(bytes.corners.polygon_colors, bytes.polygons);
+  const auto float_ply = [&](const std::string& first_red) {
+    return "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+           "property float z\nproperty float diffuse_red\nproperty float diffuse_green\n"
+           "property float diffuse_blue\nproperty float diffuse_alpha\n" +
+           triangle_faces + "end_header\n0 0 0 " + first_red +
+           " 0 0 0.5\n1 0 0 0 0.25 0 1\n0 1 0 0 0 1 1\n3 0 1 2\n";
+  };
+  EXPECT_EQ(apps::parse_ply("f", float_ply("0.75")).corners.colors,
+            (std::vector<std::array<double, 4>>{{0.75, 0, 0, 0.5}, {0, 0.25, 0, 1}, {0, 0, 1, 1}}));
+  const apps::Polygon_soup obj = apps::parse_obj(
+      "f", "v 0 0 0 1 0 0\nv 1 0 0 0 1 0 0.5\nv 0 1 0\nv 1 1 0 1\nf 1 2 3\nf 2 4 3\n");
+  ASSERT_EQ(obj.corners.colors.size(), 4u);
+  EXPECT_EQ(obj.corners.colors[0], (std::array<double, 4>{1, 0, 0, 1}));
+  EXPECT_EQ(obj.corners.colors[1], (std::array<double, 4>{0, 1, 0, 0.5}));
+  for (const std::size_t without : {2, 3})  // no colour, and a w
+    for (const double channel : obj.corners.colors[without]) EXPECT_TRUE(std::isnan(channel));
+  EXPECT_EQ(obj.corners.polygon_colors, obj.polygons);
+
+  const auto cause = [](auto&& parse) {
+    try {
+      parse();
+    } catch (const apps::App_error& e) {
+      EXPECT_EQ(e.code(), apps::exit_bad_input);
+      return std::string(e.what());
+    }
+    return std::string("read");
+  };
+  EXPECT_EQ(cause([&] { apps::parse_ply("f", float_ply("nan")); }),
+            "f: vertex 0: its colour is not finite");
+  EXPECT_EQ(cause([] { apps::parse_obj("f", "v 0 0 0 1 red 0\n"); }),
+            "f: line 1: a vertex's colour needs three or four finite numbers");
+}
+
 TEST(CornerAttributes, BadEntriesAreOneBadInputLine) {
   const auto cause = [](const std::string& bytes) {
     try {
@@ -1162,7 +1209,7 @@ TEST(CornerAttributes, BadEntriesAreOneBadInputLine) {
 
 // Each face's corners as (point, uv, normal), starting at the lowest point, and its material.
 struct Face_corners {
-  std::vector<std::array<double, 8>> corners;
+  std::vector<std::array<double, 12>> corners;
   std::uint32_t material;
   bool operator==(const Face_corners& o) const {
     // NaN marks a corner without a value: compare bit patterns, not numbers.
@@ -1181,7 +1228,9 @@ std::vector<Face_corners> face_corners(const Mesh& mesh) {
       const Attributes::Uv uv = a.uvs ? (*a.uvs)[h] : Attributes::Uv{-1, -1};
       const apps::Kernel::Vector_3 n =
           a.normals ? (*a.normals)[h] : apps::Kernel::Vector_3(-1, -1, -1);
-      face.corners.push_back({p.x(), p.y(), p.z(), uv[0], uv[1], n.x(), n.y(), n.z()});
+      const Attributes::Color c = a.colors ? (*a.colors)[h] : Attributes::Color{-1, -1, -1, -1};
+      face.corners.push_back(
+          {p.x(), p.y(), p.z(), uv[0], uv[1], n.x(), n.y(), n.z(), c[0], c[1], c[2], c[3]});
     }
     std::rotate(face.corners.begin(), std::min_element(face.corners.begin(), face.corners.end()),
                 face.corners.end());
@@ -1288,11 +1337,42 @@ TEST(CornerAttributes, ShippedTexturedMeshesRoundTripExactly) {
   fs::remove_all(folder);
 }
 
+// A mesh with texture coordinates, normals and colours, seams everywhere, written as PLY (a vertex
+// per wedge) reads back as the same mesh, every corner's values exact and each seam whole.
+TEST(CornerAttributes, PlyWrittenWithItsWedgesReadsBackExactly) {
+  Mesh cube = test_meshes::six_sided_cube();
+  test_meshes::paint_corners(
+      cube,
+      [&](Mesh::Face_index f, const apps::Point& p) {
+        return test_meshes::cube_chart(test_meshes::cube_side(cube, f), p);
+      },
+      true);
+  test_meshes::paint_colors(cube, [&](Mesh::Face_index f, const apps::Point& p) {
+    // Whole steps of 1/255, which a byte holds exactly.
+    return std::array<double, 4>{test_meshes::cube_side(cube, f) * 40 / 255.0, p.x() * 60 / 255.0,
+                                 1, 1};
+  });
+  const fs::path folder = scratch_folder("ply_wedges");
+  const std::string path = (folder / "cube.ply").string();
+  apps::write_mesh_atomically(cube, path);
+  const apps::Polygon_soup soup = apps::parse_ply(path, read_text(path));
+  // A vertex per side it lies on: 3 at each of the 8 corners, 2 along the 12 edges' 3 inner
+  // points, 1 at the 9 inner points of each side.
+  EXPECT_EQ(soup.points.size(), 8u * 3 + 12u * 3 * 2 + 6u * 9);
+  const Mesh reread = apps::read_triangle_mesh(path, nullptr, apps::Corner_attribute_reading::keep);
+  EXPECT_EQ(reread.number_of_vertices(), cube.number_of_vertices());
+  EXPECT_TRUE(CGAL::is_closed(reread));
+  EXPECT_EQ(face_corners(reread), face_corners(cube));
+  // Every edge of the cube is a seam: 12 edges of 4 segments.
+  EXPECT_EQ(apps::measure_attribute_error(cube, reread, 1000).seam_edges_b, 48u);
+  fs::remove_all(folder);
+}
+
 TEST_F(Cli, SimplifyCarriesTextureCoordinatesIntoAnObjOrSaysItDropsThem) {
   // A flat 6 x 6 grid whose texture coordinates are its x and y over 6: a linear field, which
   // every carried collapse reproduces.
   Mesh grid = test_meshes::flat_grid(6);
-  const Attributes painted = Attributes::add(grid, true, false, false);
+  const Attributes painted = Attributes::add(grid, {true, false, false, false});
   for (const auto h : grid.halfedges())
     if (!grid.is_border(h))
       (*painted.uvs)[h] = {grid.point(grid.target(h)).x() / 6, grid.point(grid.target(h)).y() / 6};
@@ -1331,9 +1411,9 @@ TEST_F(Cli, SimplifyCarriesTextureCoordinatesIntoAnObjOrSaysItDropsThem) {
   EXPECT_NE(dropped.out.find("\"attributes\": \"dropped\""), std::string::npos) << dropped.out;
   EXPECT_EQ(dropped.out.find("\"uv_"), std::string::npos) << dropped.out;  // nothing to compare
   EXPECT_EQ(dropped.out.find("\"seam_"), std::string::npos) << dropped.out;
-  EXPECT_NE(
-      dropped.err.find("texture coordinates and normals dropped (the fast policy cannot carry"),
-      std::string::npos)
+  EXPECT_NE(dropped.err.find(
+                "texture coordinates, normals and colours dropped (the fast policy cannot carry"),
+            std::string::npos)
       << dropped.err;
   EXPECT_FALSE(Attributes(apps::read_triangle_mesh(out.string(), nullptr,
                                                    apps::Corner_attribute_reading::keep))
@@ -1365,13 +1445,13 @@ std::size_t seam_edge_count(const Mesh& mesh) {
   return seams;
 }
 
-// six_sided_cube() moved off the float grid, each side its own texture chart, its normal and one
-// of two materials.
+// six_sided_cube() moved off the float grid, each side its own texture chart, its normal, its
+// colour and one of two materials.
 Mesh painted_cube() {
   Mesh mesh = test_meshes::six_sided_cube();
   for (const auto v : mesh.vertices())
     mesh.point(v) = mesh.point(v) + apps::Kernel::Vector_3(0.1, 0.2, 1.0 / 3);
-  const Attributes a = Attributes::add(mesh, true, true, true);
+  const Attributes a = Attributes::add(mesh, {true, true, true, true});
   for (const auto f : mesh.faces()) {
     const int side = test_meshes::cube_side(mesh, f);
     (*a.materials)[f] = std::uint32_t(side % 2);
@@ -1381,6 +1461,7 @@ Mesh painted_cube() {
       (*a.uvs)[h] = test_meshes::cube_chart(side, p);
       (*a.uvs)[h][1] += 1.0 / 7;
       (*a.normals)[h] = n;
+      (*a.colors)[h] = {side / 7.0, 0.3, 1.0 / 3, 0.9};
     }
   }
   return mesh;
@@ -1471,8 +1552,9 @@ tinygltf::Primitive triangles(int position, int indices, int uv, int material) {
 constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
 
 // The unit square as two primitives that share no vertex: the first indexed by u16 with float
-// texture coordinates (x, y) / 2, the second without indices, with normalized u16 ones that
-// agree at (0, 0) and differ at (1, 1), so that the diagonal is a seam.
+// texture coordinates (x, y) / 2 and normalized u8 RGB colours, the second without indices or
+// colours, with normalized u16 texture coordinates that agree at (0, 0) and differ at (1, 1), so
+// that the diagonal is a seam.
 Gltf_builder two_primitive_square() {
   Gltf_builder b;
   const int first =
@@ -1487,10 +1569,13 @@ Gltf_builder two_primitive_square() {
   const int second_uvs =
       b.accessor(std::vector<std::uint16_t>{0, 0, 52428, 52428, 0, 65535},
                  TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_VEC2, true);
+  tinygltf::Primitive colored = triangles(first, first_indices, first_uvs, 0);
+  colored.attributes["COLOR_0"] =
+      b.accessor(std::vector<std::uint8_t>{0, 51, 255, 0, 51, 255, 0, 51, 255},
+                 TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_TYPE_VEC3, true);
   b.model.materials.resize(2);
   b.model.materials[0].name = "paint";
-  b.place({triangles(first, first_indices, first_uvs, 0), triangles(second, -1, second_uvs, 1)},
-          {10, 0, 0});
+  b.place({colored, triangles(second, -1, second_uvs, 1)}, {10, 0, 0});
   return b;
 }
 
@@ -1524,6 +1609,10 @@ TEST(Gltf, TwoPrimitivesWithAUvSeamAreOneConnectedMesh) {
   EXPECT_EQ((*a.uvs)[corner_at(in_second, {11, 1, 0})], (Attributes::Uv{0.8, 0.8}));
   EXPECT_EQ((*a.uvs)[corner_at(in_first, {10, 0, 0})], (Attributes::Uv{0, 0}));
   EXPECT_EQ((*a.uvs)[corner_at(in_second, {10, 0, 0})], (Attributes::Uv{0, 0}));
+  // Colours: the first primitive's, RGB with alpha 1; none on the second's corners.
+  ASSERT_TRUE(a.colors);
+  EXPECT_EQ((*a.colors)[corner_at(in_first, {10, 0, 0})], (Attributes::Color{0, 0.2, 1, 1}));
+  EXPECT_TRUE(std::isnan((*a.colors)[corner_at(in_second, {10, 0, 0})][0]));
   fs::remove_all(folder);
 }
 
@@ -1582,7 +1671,7 @@ TEST_F(Cli, SimplifyPassesAGlbsMaterialsAndImagesThrough) {
         return std::array<double, 2>{p.x() / 6, p.y() / 6};
       },
       false);
-  const Attributes painted = Attributes::add(grid, false, false, true);
+  const Attributes painted = Attributes::add(grid, {false, false, false, true});
   for (const auto f : grid.faces()) (*painted.materials)[f] = 0;
   const fs::path plain = file("plain.glb");
   apps::write_mesh_atomically(grid, plain.string(), {{}, {"skin"}, nullptr});
@@ -1664,6 +1753,27 @@ TEST_F(Cli, SimplifyWritesATexturedObjAsGlb) {
       run("mesh_error", spot + " " + out.string() + " --attributes --json --samples 2000");
   ASSERT_EQ(compared.exit_code, 0) << compared.err;
   EXPECT_EQ(json_number(compared.out, "seam_loops_b"), 1) << compared.out;
+}
+
+TEST_F(Cli, SimplifyCarriesPlyColoursIntoAGltf) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const fs::path out = file("spot.gltf");
+  const Command_result r = run(
+      "simplify", test_meshes::data_file("spot_colors.ply") + " " + out.string() + " 0.1 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"attributes\": \"carried\""), std::string::npos) << r.out;
+  EXPECT_NE(read_text(out).find("\"COLOR_0\""), std::string::npos);
+  const Mesh simplified =
+      apps::read_triangle_mesh(out.string(), nullptr, apps::Corner_attribute_reading::keep);
+  const Attributes a(simplified);
+  ASSERT_TRUE(a.colors.has_value());
+  for (const auto h : simplified.halfedges()) {
+    if (simplified.is_border(h)) continue;
+    for (double c : (*a.colors)[h]) {
+      EXPECT_GE(c, 0);
+      EXPECT_LE(c, 1);
+    }
+  }
 }
 
 TEST_F(Cli, BadGltfIsOneBadInputLineAndNoOutput) {

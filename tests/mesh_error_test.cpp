@@ -209,6 +209,31 @@ TEST(AttributeError, NormalsTurnedByThirtyDegrees) {
   EXPECT_LE(*e.uv_max_rel, 1e-15);
 }
 
+// A colour field x / 4 in red against the same field with green raised by 0.3 and alpha lowered by
+// 0.4: off by 0.5 everywhere. Without colours on one side, no colour field.
+TEST(AttributeError, ColoursOffByAConstantAreOffByItsLength) {
+  Mesh a = flat_grid(4);
+  paint_colors(a, [](Mesh::Face_index, const Point& p) {
+    return std::array<double, 4>{p.x() / 4, 0.2, 0.1, 1};
+  });
+  Mesh b = a;
+  const Attributes changed(b);
+  for (auto h : halfedges(b))
+    if (!b.is_border(h)) {
+      (*changed.colors)[h][1] += 0.3;
+      (*changed.colors)[h][3] -= 0.4;
+    }
+  const apps::Attribute_error e = apps::measure_attribute_error(a, b, kAttributeSamples);
+  ASSERT_TRUE(e.color_mean && e.color_max);
+  EXPECT_NEAR(*e.color_mean, 0.5, 1e-12);
+  EXPECT_NEAR(*e.color_max, 0.5, 1e-12);
+  EXPECT_FALSE(e.uv_mean_rel);
+  EXPECT_EQ(e.seam_loops_a, 1u);
+  const apps::Attribute_error same = apps::measure_attribute_error(a, a, kAttributeSamples);
+  EXPECT_LE(*same.color_max, 1e-15);
+  EXPECT_FALSE(apps::measure_attribute_error(a, flat_grid(4), kAttributeSamples).color_mean);
+}
+
 TEST(AttributeError, AMirroredTextureTriangleIsOneFlippedFaceInsideASeamLoop) {
   const Mesh a = textured_plane(false);
   Mesh b = a;
@@ -263,7 +288,7 @@ TEST(AttributeError, SeamsOfCubesWithSixAndWithThreeCharts) {
 TEST(AttributeError, OnlyWhatBothMeshesHaveIsCompared) {
   const Mesh textured = textured_plane(false), bare = flat_grid(4);
   Mesh with_normals = flat_grid(4);
-  const Attributes normals = Attributes::add(with_normals, false, true, false);
+  const Attributes normals = Attributes::add(with_normals, {false, true, false, false});
   for (auto h : halfedges(with_normals))
     if (!with_normals.is_border(h)) (*normals.normals)[h] = Kernel::Vector_3(0, 0, 1);
 

@@ -541,19 +541,27 @@ TEST(CarriedAttributes, ALinearFieldOnAFlatMeshIsReproducedExactly) {
   const auto field = [](Mesh::Face_index, const Point& p) {
     return std::array<double, 2>{0.3 * p.x() + 0.1 * p.y(), -0.2 * p.x() + 0.5 * p.y() + 0.25};
   };
+  // Within [0, 1] on the grid, so that no solved colour is clamped.
+  const auto color_field = [](Mesh::Face_index, const Point& p) {
+    return std::array<double, 4>{0.05 * p.x() + 0.02 * p.y(), 0.9 - 0.04 * p.y(), 0.5, 1};
+  };
   for (const std::string& policy : kCarryingPolicies) {
     Mesh mesh = flat_grid(10);
     paint_corners(mesh, field, true);
+    paint_colors(mesh, color_field);
     const apps::Simplify_outcome outcome = simplify(mesh, policy, 20);
     EXPECT_TRUE(outcome.attributes_carried) << policy;
     EXPECT_LT(mesh.number_of_faces(), 200u) << policy;
     const Attributes attributes(mesh);
-    ASSERT_TRUE(attributes.uvs && attributes.normals) << policy;
+    ASSERT_TRUE(attributes.uvs && attributes.normals && attributes.colors) << policy;
     for (auto h : halfedges(mesh)) {
       if (mesh.is_border(h)) continue;
       const auto expected = field(face(h, mesh), mesh.point(target(h, mesh)));
       EXPECT_NEAR((*attributes.uvs)[h][0], expected[0], 1e-12) << policy;
       EXPECT_NEAR((*attributes.uvs)[h][1], expected[1], 1e-12) << policy;
+      const auto expected_color = color_field(face(h, mesh), mesh.point(target(h, mesh)));
+      for (int d = 0; d < 4; ++d)
+        EXPECT_NEAR((*attributes.colors)[h][d], expected_color[d], 1e-12) << policy;
       EXPECT_EQ((*attributes.normals)[h], Kernel::Vector_3(0, 0, 1)) << policy;
     }
     for (auto f : faces(mesh)) EXPECT_GT(uv_area(mesh, f), 0) << policy;

@@ -65,21 +65,24 @@ cgal_policies::internal::Attribute_quadric attribute_test_face() {
   const std::array<Eigen::Vector3d, 3> p{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(2, 0, 0),
                                          Eigen::Vector3d(0, 2, 0)};
   std::array<Attribute_quadric::Attributes, 3> s;
-  for (int k = 0; k < 3; ++k) s[k] << p[k].x() + 1, 0.5 * p[k].y(), none, none, none;
+  for (int k = 0; k < 3; ++k) {
+    s[k] = Attribute_quadric::Attributes::Constant(none);
+    s[k].head<2>() << p[k].x() + 1, 0.5 * p[k].y();
+  }
   return Attribute_quadric::from_face(p, s, 3.0);
 }
 
 TEST(AttributeQuadric, IsZeroOnItsFaceWithTheFaceValues) {
   const auto q = attribute_test_face();
-  cgal_policies::internal::Attribute_quadric::Attributes s;
-  s << 1.5, 0.25, 7, 7, 7;  // at (0.5, 0.5, 0); the last three have no term
+  auto s = cgal_policies::internal::Attribute_quadric::Attributes::Constant(7).eval();
+  s.head<2>() << 1.5, 0.25;  // at (0.5, 0.5, 0); the others have no term
   EXPECT_NEAR(q.evaluate({0.5, 0.5, 0}, s), 0, 1e-12);
 }
 
 TEST(AttributeQuadric, AddsTheSquaredDistanceToThePlaneAndToEachField) {
   const auto q = attribute_test_face();
-  cgal_policies::internal::Attribute_quadric::Attributes s;
-  s << 1.5 + 0.2, 0.25 - 0.1, 0, 0, 0;  // at (0.5, 0.5, 0.4)
+  auto s = cgal_policies::internal::Attribute_quadric::Attributes::Zero().eval();
+  s.head<2>() << 1.5 + 0.2, 0.25 - 0.1;  // at (0.5, 0.5, 0.4)
   EXPECT_NEAR(q.evaluate({0.5, 0.5, 0.4}, s), 3.0 * (0.16 + 0.04 + 0.01), 1e-12);
 }
 
@@ -89,7 +92,7 @@ TEST(AttributeQuadric, BestAttributesAreTheFieldsAtTheProjectionAndLeaveThePlane
   const auto best = q.best_attributes(x);
   EXPECT_NEAR(best[0], 1.3, 1e-12);
   EXPECT_NEAR(best[1], -0.35, 1e-12);
-  EXPECT_TRUE(std::isnan(best[2]) && std::isnan(best[3]) && std::isnan(best[4]));
+  for (int j = 2; j < best.size(); ++j) EXPECT_TRUE(std::isnan(best[j])) << j;
   EXPECT_NEAR(q.evaluate(x, best), 3.0 * 0.25, 1e-12);
   EXPECT_NEAR(q.position_quadric().evaluate(x), 3.0 * 0.25, 1e-12);
 }
@@ -101,8 +104,9 @@ TEST(AttributeQuadric, TwoFacesDisagreeingOnAValueAreMetHalfway) {
                                          Eigen::Vector3d(0, 1, 0)};
   std::array<Attribute_quadric::Attributes, 3> zero, two;
   for (int k = 0; k < 3; ++k) {
-    zero[k] << 0, none, none, none, none;
-    two[k] << 2, none, none, none, none;
+    zero[k] = two[k] = Attribute_quadric::Attributes::Constant(none);
+    zero[k][0] = 0;
+    two[k][0] = 2;
   }
   const Attribute_quadric q =
       Attribute_quadric::from_face(p, zero, 1.0) + Attribute_quadric::from_face(p, two, 1.0);

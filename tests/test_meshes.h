@@ -162,12 +162,22 @@ inline std::array<double, 2> cube_chart(int k, const Point& p) {
 template <class Uv_of>
 void paint_corners(Mesh& mesh, const Uv_of& uv_of, bool with_normals) {
   const auto attributes =
-      cgal_policies::Corner_attributes<Point>::add(mesh, true, with_normals, false);
+      cgal_policies::Corner_attributes<Point>::add(mesh, {true, with_normals, false, false});
   for (auto h : halfedges(mesh)) {
     if (mesh.is_border(h)) continue;
     (*attributes.uvs)[h] = uv_of(face(h, mesh), mesh.point(target(h, mesh)));
     if (with_normals) (*attributes.normals)[h] = Kernel::Vector_3(0, 0, 1);
   }
+}
+
+// Sets every corner's colour from its face and the point of its vertex.
+template <class Color_of>
+void paint_colors(Mesh& mesh, const Color_of& color_of) {
+  const auto attributes =
+      cgal_policies::Corner_attributes<Point>::add(mesh, {false, false, true, false});
+  for (auto h : halfedges(mesh))
+    if (!mesh.is_border(h))
+      (*attributes.colors)[h] = color_of(face(h, mesh), mesh.point(target(h, mesh)));
 }
 
 // Twice the signed area of a face's texture triangle.

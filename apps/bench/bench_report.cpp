@@ -168,16 +168,18 @@ std::string attribute_table(const std::vector<Run_record>& records) {
     rows += "| " + r.mesh + " | " + target_cell(r) + " | " + r.policy + " | " + r.attributes +
             " | " + cell(e.uv_mean_rel, 100, "%.3g") + " | " + cell(e.uv_max_rel, 100, "%.3g") +
             " | " + cell(e.normal_angle_mean_deg, 1, "%.3g") + " | " +
-            cell(e.seam_loops_a, 1, "%.0f") + " / " + cell(e.seam_loops_b, 1, "%.0f") + " | " +
-            cell(e.flipped_uv_faces, 1, "%.0f") + " | " + percent(mean_error_rel(r)) + " |\n";
+            cell(e.color_mean, 100, "%.3g") + " | " + cell(e.seam_loops_a, 1, "%.0f") + " / " +
+            cell(e.seam_loops_b, 1, "%.0f") + " | " + cell(e.flipped_uv_faces, 1, "%.0f") + " | " +
+            percent(mean_error_rel(r)) + " |\n";
   }
   if (rows.empty()) return "";
   return "## Corner attributes\n\nTexture distance at corresponding points in % of the input's "
-         "texture extent, normal angle in degrees, seam loops in / out, texture triangles turned "
-         "over, and the geometric mean error (both directions, % of the diagonal).\n\n"
+         "texture extent, normal angle in degrees, colour distance in % of full intensity, seam "
+         "loops in / out, texture triangles turned over, and the geometric mean error (both "
+         "directions, % of the diagonal).\n\n"
          "| mesh | target → faces | policy | attributes | uv mean % | uv max % | normal mean ° | "
-         "seam loops | flipped | mean % |\n"
-         "|---|---|---|---|--:|--:|--:|--:|--:|--:|\n" +
+         "colour mean % | seam loops | flipped | mean % |\n"
+         "|---|---|---|---|--:|--:|--:|--:|--:|--:|--:|\n" +
          rows + "\n";
 }
 

@@ -2,60 +2,46 @@
 
 #include <cgal_policies/Corner_attributes.h>
 
-#include <cmath>
-#include <cstddef>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <boost/container/small_vector.hpp>
+
+#include <algorithm>
+#include <utility>
 
 namespace apps {
-namespace {
-
-using Attributes = cgal_policies::Corner_attributes<Point>;
-
-bool same_number(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
-
-// The values of a corner that tell wedges apart; NaN where the mesh has no such map.
-std::array<double, 5> corner_values(const Attributes& attributes, Mesh::Halfedge_index h) {
-  std::array<double, 5> values;
-  values.fill(Attributes::kNone);
-  if (attributes.uvs) values[0] = (*attributes.uvs)[h][0], values[1] = (*attributes.uvs)[h][1];
-  if (attributes.normals)
-    for (int i = 0; i < 3; ++i) values[2 + i] = (*attributes.normals)[h][i];
-  return values;
-}
-
-bool same_values(const std::array<double, 5>& a, const std::array<double, 5>& b) {
-  for (std::size_t i = 0; i < a.size(); ++i)
-    if (!same_number(a[i], b[i])) return false;
-  return true;
-}
-
-}  // namespace
 
 Wedge_mesh wedge_mesh(const Mesh& mesh) {
+  using Attributes = cgal_policies::Corner_attributes<Point>;
   const Attributes attributes(mesh);
-  Wedge_mesh wedges;
-  // Each vertex's wedges so far, with their values: a vertex has few, so a scan finds them.
-  std::vector<std::vector<std::pair<std::array<double, 5>, std::uint32_t>>> wedges_of(
-      mesh.number_of_vertices() + mesh.number_of_removed_vertices());
+  // The wedges found so far at each vertex: their values and their index.
+  using Found = boost::container::small_vector<std::pair<Attributes::Values, std::uint32_t>, 1>;
+  std::vector<Found> found(mesh.number_of_vertices() + mesh.number_of_removed_vertices());
+  Wedge_mesh result;
+  result.triangles.reserve(mesh.number_of_faces());
   for (const auto f : mesh.faces()) {
     std::array<std::uint32_t, 3> triangle{};
     std::size_t k = 0;
     for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
-      const std::array<double, 5> values = corner_values(attributes, h);
-      auto& known = wedges_of[mesh.target(h)];
-      std::size_t w = 0;
-      while (w < known.size() && !same_values(known[w].first, values)) ++w;
-      if (w == known.size()) {
-        known.emplace_back(values, std::uint32_t(wedges.points.size()));
-        wedges.points.push_back(mesh.point(mesh.target(h)));
-        if (attributes.uvs) wedges.uvs.push_back((*attributes.uvs)[h]);
-        if (attributes.normals) wedges.normals.push_back((*attributes.normals)[h]);
+      const auto v = mesh.target(h);
+      const Attributes::Values values = attributes.values(h);
+      Found& wedges = found[std::size_t(v)];
+      auto wedge = std::find_if(wedges.begin(), wedges.end(), [&](const auto& w) {
+        return Attributes::same_values(w.first, values);
+      });
+      if (wedge == wedges.end()) {
+        wedge = wedges.insert(wedges.end(), {values, std::uint32_t(result.points.size())});
+        result.points.push_back(mesh.point(v));
+        if (attributes.uvs) result.uvs.push_back(values.uv);
+        if (attributes.normals) result.normals.push_back(values.normal);
+        if (attributes.colors) result.colors.push_back(values.color);
       }
-      triangle[k++] = known[w].second;
+      triangle[k++] = wedge->second;
     }
-    wedges.triangles.push_back(triangle);
-    if (attributes.materials) wedges.materials.push_back((*attributes.materials)[f]);
+    result.triangles.push_back(triangle);
+    if (attributes.materials) result.materials.push_back((*attributes.materials)[f]);
   }
-  return wedges;
+  return result;
 }
 
 }  // namespace apps

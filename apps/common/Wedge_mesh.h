@@ -1,6 +1,6 @@
-// A mesh as the formats that store one set of values per vertex (glTF) want it: one vertex per
-// wedge, that is, per mesh vertex and distinct tuple of values among its corners
-// (cgal_policies::Corner_attributes), so that a seam splits a vertex in as many as it has sides.
+// A mesh as formats with per-vertex attributes (PLY, glTF) store it: one vertex per wedge, a wedge
+// being a mesh vertex with one distinct tuple of its corners' values
+// (cgal_policies::Corner_attributes), so that each side of a seam keeps its own values.
 #ifndef CGAL_POLICIES_APPS_WEDGE_MESH_H
 #define CGAL_POLICIES_APPS_WEDGE_MESH_H
 
@@ -21,7 +21,7 @@ struct Wedge_mesh {
   std::vector<std::uint32_t> materials;  // per triangle; empty without a material map
 };
 
-// The wedges of a triangle mesh, each vertex's in the order its corners are first met face by face.
+// The wedges numbered in the order the faces first use them; a vertex on no face has none.
 Wedge_mesh wedge_mesh(const Mesh& mesh);
 
 }  // namespace apps

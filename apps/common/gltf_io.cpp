@@ -12,7 +12,6 @@
 #include <cstring>
 #include <exception>
 #include <filesystem>
-#include <initializer_list>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -142,7 +141,7 @@ double component(const unsigned char* at, int component_type, bool normalized) {
 // the allowed component types, normalized when of integers unless it holds indices (as the spec
 // has it), and that the file holds every element it declares.
 std::vector<double> accessor_values(const std::string& path, const tinygltf::Model& model,
-                                    int index, int type, std::initializer_list<int> allowed,
+                                    int index, int type, const std::vector<int>& allowed,
                                     const std::string& what, bool holds_indices = false) {
   if (index < 0 || std::size_t(index) >= model.accessors.size())
     fail(path, what + ": accessor " + std::to_string(index) + " does not exist");
@@ -220,7 +219,13 @@ Matrix normal_matrix(const Matrix& m) {
   return n;
 }
 
-// Builds the soup primitive by primitive, welding points at exactly the same position.
+// The component types glTF allows for texture coordinates and colours.
+const std::vector<int> kFloatOrNormalized = {TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                             TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                             TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
+
+// Builds the soup primitive by primitive: a point for each glTF vertex a triangle uses, the
+// corner tables an entry for each glTF vertex.
 class Soup_builder {
  public:
   Soup_builder(const std::string& path, const tinygltf::Model& model)
@@ -244,11 +249,67 @@ class Soup_builder {
     const bool moved = world != kIdentity;
     if (moved) transform(world, 1, positions);
 
-    const std::size_t uv_base = m_soup.corners.uvs.size();
-    const std::size_t normal_base = m_soup.corners.normals.size();
-    const bool with_uvs = read_uvs(primitive, vertices, what);
-    const bool with_normals = read_normals(primitive, vertices, moved, world, what);
+    Corner_tables& tables = m_soup.corners;
+    const std::array<std::size_t, 3> base = {tables.uvs.size(), tables.normals.size(),
+                                             tables.colors.size()};
+    const std::array<bool, 3> with = {read_uvs(primitive, vertices, what),
+                                      read_normals(primitive, vertices, moved, world, what),
+                                      read_colors(primitive, vertices, what)};
+    const std::array<std::vector<std::vector<std::size_t>>*, 3> lists = {
+        &tables.polygon_uvs, &tables.polygon_normals, &tables.polygon_colors};
 
+    const std::vector<std::size_t> corners = triangle_corners(primitive, vertices, what);
+    if (primitive.material >= 0 && std::size_t(primitive.material) >= m_model.materials.size())
+      fail(m_path, what + ": material " + std::to_string(primitive.material) + " does not exist");
+
+    std::vector<std::size_t> point_of_vertex(vertices, Corner_tables::kNoEntry);
+    // A mirroring transform turns the winding: two corners swap to keep the faces outward.
+    const bool mirrored = moved && determinant3(world) < 0;
+    for (std::size_t t = 0; t < corners.size(); t += 3) {
+      std::vector<std::size_t> polygon;
+      std::array<std::vector<std::size_t>, 3> entries;
+      for (std::size_t k : {std::size_t(0), mirrored ? std::size_t(2) : std::size_t(1),
+                            mirrored ? std::size_t(1) : std::size_t(2)}) {
+        const std::size_t v = corners[t + k];
+        if (point_of_vertex[v] == Corner_tables::kNoEntry) {
+          point_of_vertex[v] = m_soup.points.size();
+          m_soup.points.emplace_back(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]);
+        }
+        polygon.push_back(point_of_vertex[v]);
+        for (std::size_t kind = 0; kind < 3; ++kind)
+          entries[kind].push_back(with[kind] ? base[kind] + v : Corner_tables::kNoEntry);
+      }
+      m_soup.polygons.push_back(std::move(polygon));
+      for (std::size_t kind = 0; kind < 3; ++kind) lists[kind]->push_back(std::move(entries[kind]));
+      tables.polygon_materials.push_back(primitive.material >= 0 ? std::uint32_t(primitive.material)
+                                                                 : Corner_tables::kNoMaterial);
+    }
+    for (std::size_t kind = 0; kind < 3; ++kind) m_any[kind] = m_any[kind] || with[kind];
+  }
+
+  // The soup, its points joined where they are equal; the corner lists of a kind no primitive
+  // has are left empty, as the other readers leave them.
+  Polygon_soup soup() && {
+    Corner_tables& corners = m_soup.corners;
+    if (!m_any[0]) corners.polygon_uvs.clear();
+    if (!m_any[1]) corners.polygon_normals.clear();
+    if (!m_any[2]) corners.polygon_colors.clear();
+    if (std::all_of(corners.polygon_materials.begin(), corners.polygon_materials.end(),
+                    [](std::uint32_t m) { return m == Corner_tables::kNoMaterial; }))
+      corners.polygon_materials.clear();
+    else
+      for (std::size_t i = 0; i < m_model.materials.size(); ++i)
+        corners.material_names.push_back(m_model.materials[i].name.empty()
+                                             ? "material_" + std::to_string(i)
+                                             : m_model.materials[i].name);
+    join_equal_points(m_soup);
+    return std::move(m_soup);
+  }
+
+ private:
+  // The corners of the primitive's triangles, as glTF vertex numbers.
+  std::vector<std::size_t> triangle_corners(const tinygltf::Primitive& primitive,
+                                            std::size_t vertices, const std::string& what) {
     std::vector<std::size_t> corners;
     if (primitive.indices < 0) {
       for (std::size_t v = 0; v < vertices; ++v) corners.push_back(v);
@@ -267,67 +328,15 @@ class Soup_builder {
     if (corners.size() % 3 != 0)
       fail(m_path, what + ": " + std::to_string(corners.size()) +
                        " corners, not a whole number of triangles");
-    if (primitive.material >= 0 && std::size_t(primitive.material) >= m_model.materials.size())
-      fail(m_path, what + ": material " + std::to_string(primitive.material) + " does not exist");
-
-    std::vector<std::size_t> point_of_vertex(vertices, Corner_tables::kNoEntry);
-    // A mirroring transform turns the winding: two corners swap to keep the faces outward.
-    const bool mirrored = moved && determinant3(world) < 0;
-    for (std::size_t t = 0; t < corners.size(); t += 3) {
-      std::vector<std::size_t> polygon, uvs, normals;
-      for (std::size_t k : {std::size_t(0), mirrored ? std::size_t(2) : std::size_t(1),
-                            mirrored ? std::size_t(1) : std::size_t(2)}) {
-        const std::size_t v = corners[t + k];
-        if (point_of_vertex[v] == Corner_tables::kNoEntry)
-          point_of_vertex[v] = welded_point(&positions[3 * v]);
-        polygon.push_back(point_of_vertex[v]);
-        uvs.push_back(with_uvs ? uv_base + v : Corner_tables::kNoEntry);
-        normals.push_back(with_normals ? normal_base + v : Corner_tables::kNoEntry);
-      }
-      m_soup.polygons.push_back(std::move(polygon));
-      m_soup.corners.polygon_uvs.push_back(std::move(uvs));
-      m_soup.corners.polygon_normals.push_back(std::move(normals));
-      m_soup.corners.polygon_materials.push_back(
-          primitive.material >= 0 ? std::uint32_t(primitive.material) : Corner_tables::kNoMaterial);
-    }
-    m_any_uvs = m_any_uvs || with_uvs;
-    m_any_normals = m_any_normals || with_normals;
-  }
-
-  // The soup; the corner lists of a kind no primitive has are left empty, as the other readers
-  // leave them.
-  Polygon_soup soup() && {
-    Corner_tables& corners = m_soup.corners;
-    if (!m_any_uvs) corners.polygon_uvs.clear();
-    if (!m_any_normals) corners.polygon_normals.clear();
-    if (std::all_of(corners.polygon_materials.begin(), corners.polygon_materials.end(),
-                    [](std::uint32_t m) { return m == Corner_tables::kNoMaterial; }))
-      corners.polygon_materials.clear();
-    else
-      for (std::size_t i = 0; i < m_model.materials.size(); ++i)
-        corners.material_names.push_back(m_model.materials[i].name.empty()
-                                             ? "material_" + std::to_string(i)
-                                             : m_model.materials[i].name);
-    return std::move(m_soup);
-  }
-
- private:
-  std::size_t welded_point(const double* p) {
-    const auto [it, added] =
-        m_point_of_position.emplace(std::array<double, 3>{p[0], p[1], p[2]}, m_soup.points.size());
-    if (added) m_soup.points.emplace_back(p[0], p[1], p[2]);
-    return it->second;
+    return corners;
   }
 
   bool read_uvs(const tinygltf::Primitive& primitive, std::size_t vertices,
                 const std::string& what) {
     const auto uv = primitive.attributes.find("TEXCOORD_0");
     if (uv == primitive.attributes.end()) return false;
-    const std::vector<double> values =
-        accessor_values(m_path, m_model, uv->second, TINYGLTF_TYPE_VEC2,
-                        {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                         TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
-                        what + " TEXCOORD_0");
+    const std::vector<double> values = accessor_values(
+        m_path, m_model, uv->second, TINYGLTF_TYPE_VEC2, kFloatOrNormalized, what + " TEXCOORD_0");
     check_vertex_count(values.size() / 2, vertices, what + " TEXCOORD_0");
     check_finite(m_path, values, 2, what + ": the texture coordinate");
     for (std::size_t i = 0; i < values.size(); i += 2)
@@ -354,6 +363,25 @@ class Soup_builder {
     return true;
   }
 
+  // RGB (alpha 1) or RGBA, as the accessor's type says.
+  bool read_colors(const tinygltf::Primitive& primitive, std::size_t vertices,
+                   const std::string& what) {
+    const auto color = primitive.attributes.find("COLOR_0");
+    if (color == primitive.attributes.end()) return false;
+    const bool rgb = color->second >= 0 && std::size_t(color->second) < m_model.accessors.size() &&
+                     m_model.accessors[std::size_t(color->second)].type == TINYGLTF_TYPE_VEC3;
+    const std::size_t channels = rgb ? 3 : 4;
+    const std::vector<double> values = accessor_values(
+        m_path, m_model, color->second, rgb ? TINYGLTF_TYPE_VEC3 : TINYGLTF_TYPE_VEC4,
+        kFloatOrNormalized, what + " COLOR_0");
+    check_vertex_count(values.size() / channels, vertices, what + " COLOR_0");
+    check_finite(m_path, values, channels, what + ": the colour");
+    for (std::size_t i = 0; i < values.size(); i += channels)
+      m_soup.corners.colors.push_back(
+          {values[i], values[i + 1], values[i + 2], rgb ? 1.0 : values[i + 3]});
+    return true;
+  }
+
   void check_vertex_count(std::size_t count, std::size_t vertices, const std::string& what) {
     if (count != vertices)
       fail(m_path, what + ": " + std::to_string(count) + " values for " + std::to_string(vertices) +
@@ -363,8 +391,7 @@ class Soup_builder {
   const std::string& m_path;
   const tinygltf::Model& m_model;
   Polygon_soup m_soup;
-  std::map<std::array<double, 3>, std::size_t> m_point_of_position;
-  bool m_any_uvs = false, m_any_normals = false;
+  std::array<bool, 3> m_any{};  // whether any primitive has texture coordinates, normals, colours
 };
 
 // What a written file keeps of the input: its looks, image files named by absolute path and
@@ -417,10 +444,12 @@ int append_accessor(tinygltf::Model& model, int view, std::size_t byte_offset, i
   return int(model.accessors.size() - 1);
 }
 
-// A float vertex attribute of every wedge; a value without a number becomes 0.
-int append_float_attribute(tinygltf::Model& model, std::vector<float> values, int type) {
+// A float vertex attribute of every wedge; a value without a number (a corner without one)
+// becomes `none`, as glTF has no "none".
+int append_float_attribute(tinygltf::Model& model, std::vector<float> values, int type,
+                           float none = 0) {
   for (float& v : values)
-    if (std::isnan(v)) v = 0;
+    if (std::isnan(v)) v = none;
   const std::size_t components = std::size_t(tinygltf::GetNumComponentsInType(std::uint32_t(type)));
   const int view = append_view(model, values.data(), values.size() * sizeof(float),
                                TINYGLTF_TARGET_ARRAY_BUFFER);
@@ -518,6 +547,13 @@ std::string gltf_bytes(const Mesh& mesh, bool binary, const Material_references&
     for (const auto& uv : wedges.uvs)
       for (double c : uv) uvs.push_back(float(c));
     shape.attributes["TEXCOORD_0"] = append_float_attribute(model, uvs, TINYGLTF_TYPE_VEC2);
+  }
+  if (!wedges.colors.empty()) {
+    std::vector<float> colors;
+    for (const auto& color : wedges.colors)
+      for (double c : color) colors.push_back(float(c));
+    // A corner without a colour is white, which leaves the material's colour as it is.
+    shape.attributes["COLOR_0"] = append_float_attribute(model, colors, TINYGLTF_TYPE_VEC4, 1);
   }
 
   if (materials.gltf)

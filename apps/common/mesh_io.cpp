@@ -6,6 +6,7 @@
 #include "declared_counts.h"
 #include "gltf_io.h"
 #include "obj_writer.h"
+#include "ply_writer.h"
 #include "polygon_crossing.h"
 #include "soup_readers.h"
 
@@ -132,7 +133,7 @@ using Attributes = cgal_policies::Corner_attributes<Point>;
 
 bool has_corner_attributes(const Corner_tables* corners) {
   return corners && (!corners->polygon_uvs.empty() || !corners->polygon_normals.empty() ||
-                     !corners->polygon_materials.empty());
+                     !corners->polygon_colors.empty() || !corners->polygon_materials.empty());
 }
 
 // Puts the attributes of `corners` on the mesh built from `polygons`, whose face i is polygon i
@@ -140,9 +141,12 @@ bool has_corner_attributes(const Corner_tables* corners) {
 void set_corner_attributes(Mesh& mesh, const std::vector<Polygon>& polygons,
                            const Corner_tables& corners,
                            const std::vector<Mesh::Vertex_index>& vertex_of_point) {
-  const Attributes attributes =
-      Attributes::add(mesh, !corners.polygon_uvs.empty(), !corners.polygon_normals.empty(),
-                      !corners.polygon_materials.empty());
+  Attributes::Kinds kinds;
+  kinds.uvs = !corners.polygon_uvs.empty();
+  kinds.normals = !corners.polygon_normals.empty();
+  kinds.colors = !corners.polygon_colors.empty();
+  kinds.materials = !corners.polygon_materials.empty();
+  const Attributes attributes = Attributes::add(mesh, kinds);
   for (std::size_t f = 0; f < polygons.size(); ++f) {
     const Mesh::Face_index face(static_cast<Mesh::size_type>(f));
     if (attributes.materials) (*attributes.materials)[face] = corners.polygon_materials[f];
@@ -153,6 +157,8 @@ void set_corner_attributes(Mesh& mesh, const std::vector<Polygon>& polygons,
         (*attributes.uvs)[h] = corners.uvs[corners.polygon_uvs[f][k]];
       if (attributes.normals && corners.polygon_normals[f][k] != Corner_tables::kNoEntry)
         (*attributes.normals)[h] = corners.normals[corners.polygon_normals[f][k]];
+      if (attributes.colors && corners.polygon_colors[f][k] != Corner_tables::kNoEntry)
+        (*attributes.colors)[h] = corners.colors[corners.polygon_colors[f][k]];
     }
   }
 }
@@ -162,18 +168,16 @@ void set_corner_attributes(Mesh& mesh, const std::vector<Polygon>& polygons,
 class Corner_attribute_copier : public PMP::Triangulate_faces::Default_visitor<Mesh> {
  public:
   Corner_attribute_copier(Mesh& mesh, const Attributes& attributes)
-      : m_record(std::make_shared<Record>(Record{&mesh, attributes, {}, {}, {}, {}})) {}
+      : m_record(std::make_shared<Record>(Record{&mesh, attributes, {}, {}, {}})) {}
 
   void before_subface_creations(Mesh::Face_index polygon) {
     Record& r = *m_record;
     r.vertices.clear();
-    r.uvs.clear();
-    r.normals.clear();
+    r.values.clear();
     r.material = r.attributes.materials ? (*r.attributes.materials)[polygon] : 0;
     for (const auto h : CGAL::halfedges_around_face(r.mesh->halfedge(polygon), *r.mesh)) {
       r.vertices.push_back(r.mesh->target(h));
-      if (r.attributes.uvs) r.uvs.push_back((*r.attributes.uvs)[h]);
-      if (r.attributes.normals) r.normals.push_back((*r.attributes.normals)[h]);
+      r.values.push_back(r.attributes.values(h));
     }
   }
 
@@ -183,8 +187,7 @@ class Corner_attribute_copier : public PMP::Triangulate_faces::Default_visitor<M
     for (const auto h : CGAL::halfedges_around_face(r.mesh->halfedge(triangle), *r.mesh)) {
       const std::size_t k = std::size_t(
           std::find(r.vertices.begin(), r.vertices.end(), r.mesh->target(h)) - r.vertices.begin());
-      if (r.attributes.uvs) (*r.attributes.uvs)[h] = r.uvs[k];
-      if (r.attributes.normals) (*r.attributes.normals)[h] = r.normals[k];
+      r.attributes.set_values(h, r.values[k]);
     }
   }
 
@@ -193,8 +196,7 @@ class Corner_attribute_copier : public PMP::Triangulate_faces::Default_visitor<M
     Mesh* mesh;
     Attributes attributes;
     std::vector<Mesh::Vertex_index> vertices;
-    std::vector<Attributes::Uv> uvs;
-    std::vector<Kernel::Vector_3> normals;
+    std::vector<Attributes::Values> values;
     std::uint32_t material;
   };
   std::shared_ptr<Record> m_record;
@@ -270,19 +272,11 @@ Polygon_soup read_soup(const std::string& path, const std::string& extension,
                                : parse_ply(path, bytes);
 }
 
-void write_bytes_atomically(const std::string& path, const std::string& bytes) {
-  write_atomically(path, [&](const std::string& temporary) {
-    std::ofstream file(temporary, std::ios::binary);
-    file.write(bytes.data(), std::streamsize(bytes.size()));
-    return bool(file.flush());
-  });
-}
-
 }  // namespace
 
 bool writes_corner_attributes(const std::string& path) {
   const std::string extension = lower_extension(path);
-  return extension == ".obj" || is_gltf(extension);
+  return extension == ".obj" || extension == ".ply" || is_gltf(extension);
 }
 
 bool has_supported_mesh_extension(const std::string& path) {
@@ -302,6 +296,10 @@ Mesh read_triangle_mesh(const std::string& path, Read_report* report,
     Polygon_soup soup = read_soup(path, extension, gltf_looks);
     if (attributes == Corner_attribute_reading::drop)
       return triangle_mesh_from_soup(path, soup.points, soup.polygons, report);
+    const Corner_tables& tables = soup.corners;
+    if (extension == ".ply" &&
+        !(tables.uvs.empty() && tables.normals.empty() && tables.colors.empty()))
+      join_equal_points(soup);
     Mesh mesh = triangle_mesh_from_soup(path, soup.points, soup.polygons, report, &soup.corners);
     if (report && Attributes(mesh).materials) {
       const fs::path folder = fs::absolute(path).parent_path();
@@ -359,16 +357,27 @@ void check_output_path(const std::string& input, const std::string& output, bool
 void write_mesh_atomically(const Mesh& mesh, const std::string& path,
                            const Material_references& materials) {
   const std::string extension = lower_extension(path);
+  const auto write_bytes = [&path](const std::string& bytes) {
+    write_atomically(path, [&](const std::string& temporary) {
+      std::ofstream file(temporary, std::ios::binary);
+      file.write(bytes.data(), std::streamsize(bytes.size()));
+      return bool(file.flush());
+    });
+  };
   const fs::path folder = fs::absolute(path).parent_path();
   if (is_gltf(extension)) {
-    write_bytes_atomically(path, gltf_bytes(mesh, extension == ".glb", materials, folder.string()));
+    write_bytes(gltf_bytes(mesh, extension == ".glb", materials, folder.string()));
     return;
   }
   if (extension == ".obj" && Attributes(mesh).any()) {
     std::vector<std::string> libraries;
     for (const std::string& library : materials.libraries)
       libraries.push_back(fs::path(library).lexically_relative(folder).string());
-    write_bytes_atomically(path, obj_text(mesh, libraries, materials.names));
+    write_bytes(obj_text(mesh, libraries, materials.names));
+    return;
+  }
+  if (extension == ".ply" && Attributes(mesh).any_corner_values()) {
+    write_bytes(ply_bytes(wedge_mesh(mesh)));
     return;
   }
   write_atomically(path, [&](const std::string& temporary) {

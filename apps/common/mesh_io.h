@@ -31,16 +31,16 @@ struct Read_report {
   Material_references materials;     // when the corner attributes were kept
 };
 
-// Whether the reader puts a file's texture coordinates, normals and materials on the mesh
-// (cgal_policies::Corner_attributes), or reads the surface alone. OBJ files carry all three, PLY
-// files per-vertex normals and texture coordinates, glTF files all three per vertex; the others
-// none.
+// Whether the reader puts a file's texture coordinates, normals, colours and materials on the mesh
+// (cgal_policies::Corner_attributes), or reads the surface alone. OBJ files carry all four
+// (colours per point), PLY files per-vertex normals, texture coordinates and colours, glTF files
+// all four per vertex; the others none.
 enum class Corner_attribute_reading { drop, keep };
 
 bool has_supported_mesh_extension(const std::string& path);
 
 // Whether write_mesh_atomically writes a mesh's corner attributes to a file of this name (OBJ,
-// glTF).
+// PLY, glTF).
 bool writes_corner_attributes(const std::string& path);
 
 // Reads a triangle mesh; throws App_error(exit_bad_input, "<path>: <cause>") when it cannot.
@@ -62,9 +62,11 @@ void check_output_path(const std::string& input, const std::string& output, bool
 
 // Writes by extension with full precision, all or nothing (write_atomically); throws
 // App_error(exit_bad_output) and leaves no file behind when that fails. An OBJ file gets the
-// mesh's corner attributes too: its texture coordinates and normals per corner, and `materials`
-// (mtllib paths made relative to the file's folder, a usemtl line wherever the material changes);
-// a glTF file (.gltf, .glb) gets them as gltf_bytes (gltf_io.h) writes them.
+// mesh's corner attributes too (obj_text): its texture coordinates and normals per corner, colours
+// per point, and `materials` (mtllib paths made relative to the file's folder, a usemtl line
+// wherever the material changes). A PLY file gets a vertex per wedge with its values (ply_bytes).
+// A glTF file (.gltf, .glb) is always written by gltf_bytes (gltf_io.h), with whatever the mesh
+// carries.
 void write_mesh_atomically(const Mesh& mesh, const std::string& path,
                            const Material_references& materials = {});
 

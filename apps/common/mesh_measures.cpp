@@ -198,7 +198,6 @@ Mesh_error measure_mesh_error(const Mesh& a, const Mesh& b, std::size_t samples)
 namespace {
 
 using Attributes = cgal_policies::Corner_attributes<Point>;
-using Uv = Attributes::Uv;
 using Vector = Kernel::Vector_3;
 constexpr double kNone = Attributes::kNone;
 
@@ -220,21 +219,24 @@ std::array<double, 3> closest_weights(const Point& p, Mesh::Face_index f, const 
   return {w[0], w[1], w[2]};
 }
 
-Uv interpolated_uv(const Attributes::Uv_map& uvs, const std::array<Mesh::Halfedge_index, 3>& c,
-                   const std::array<double, 3>& w) {
-  Uv uv{0, 0};
-  for (int k = 0; k < 3; ++k)
-    for (int d = 0; d < 2; ++d) uv[d] += w[k] * uvs[c[k]][d];
-  return uv;
+Attributes::Values interpolated(const Attributes& attributes,
+                                const std::array<Mesh::Halfedge_index, 3>& c,
+                                const std::array<double, 3>& w) {
+  return Attributes::blend(
+      {attributes.values(c[0]), attributes.values(c[1]), attributes.values(c[2])}, w);
 }
 
-// Normalised; NaN where the corners hold no normal or cancel out.
-Vector interpolated_normal(const Attributes::Normal_map& normals,
-                           const std::array<Mesh::Halfedge_index, 3>& c,
-                           const std::array<double, 3>& w) {
-  const Vector sum = w[0] * normals[c[0]] + w[1] * normals[c[1]] + w[2] * normals[c[2]];
-  const double length = std::sqrt(sum.squared_length());
-  return length > 0 ? sum / length : Vector(kNone, kNone, kNone);
+// In degrees; NaN where either normal is missing or the corners' normals cancel out.
+double angle_between(const Vector& m, const Vector& n) {
+  if (!(m.squared_length() > 0) || !(n.squared_length() > 0)) return kNone;
+  // atan2 rather than acos: exact at 0 and accurate near it.
+  return std::atan2(std::sqrt(CGAL::cross_product(m, n).squared_length()), m * n) * 180.0 / M_PI;
+}
+
+double color_distance(const Attributes::Color& p, const Attributes::Color& q) {
+  double sum = 0;
+  for (int d = 0; d < 4; ++d) sum += (p[d] - q[d]) * (p[d] - q[d]);
+  return std::sqrt(sum);
 }
 
 // The mean and the maximum of the finite values, none when there is none.
@@ -309,8 +311,9 @@ Attribute_error measure_attribute_error(const Mesh& a, const Mesh& b, std::size_
   const Attributes in_a(a), in_b(b);
   Attribute_error error;
   // Seams are judged on every corner value a mesh has, so they compare only like with like.
-  if (in_a.any_corner_values() && in_a.uvs.has_value() == in_b.uvs.has_value() &&
-      in_a.normals.has_value() == in_b.normals.has_value()) {
+  const auto kinds_a = in_a.kinds(), kinds_b = in_b.kinds();
+  if (in_a.any_corner_values() && kinds_a.uvs == kinds_b.uvs &&
+      kinds_a.normals == kinds_b.normals && kinds_a.colors == kinds_b.colors) {
     const Seams seams_a = count_seams(a), seams_b = count_seams(b);
     error.seam_edges_a = seams_a.edges;
     error.seam_edges_b = seams_b.edges;
@@ -318,36 +321,32 @@ Attribute_error measure_attribute_error(const Mesh& a, const Mesh& b, std::size_
     error.seam_loops_b = seams_b.loops;
   }
   const double extent = in_a.uv_extent(a);
-  const bool uvs = in_a.uvs && in_b.uvs && extent > 0, normals = in_a.normals && in_b.normals;
+  const bool uvs = in_a.uvs && in_b.uvs && extent > 0, normals = in_a.normals && in_b.normals,
+             colors = in_a.colors && in_b.colors;
   if (uvs) error.flipped_uv_faces = flipped_uv_faces(a, in_a, b, in_b);
-  if (!uvs && !normals) return error;
+  if (!uvs && !normals && !colors) return error;
 
   // At each sample of A and the closest point of B: each side's interpolated value. A closest
   // point on a seam of B takes the values of the face the tree gives, whichever chart it is in.
   const std::vector<Face_sample> points = sample_face_points(a, samples);
   Face_tree tree(faces(b).first, faces(b).second, b);
   tree.accelerate_distance_queries();
-  std::vector<double> uv_distance(points.size(), kNone), angle(points.size(), kNone);
+  std::vector<double> uv_distance(points.size(), kNone), angle(points.size(), kNone),
+      color_distances(points.size(), kNone);
   for_each_index_in_parallel(points.size(), [&](std::size_t i) {
     const Face_sample& s = points[i];
     const Mesh::Face_index f = tree.closest_point_and_primitive(s.point).second;
     const auto corners_a = corners_of(s.face, a), corners_b = corners_of(f, b);
     const std::array<double, 3> weights_b = closest_weights(s.point, f, b);
-    if (uvs) {
-      const Uv p = interpolated_uv(*in_a.uvs, corners_a, s.weights);
-      const Uv q = interpolated_uv(*in_b.uvs, corners_b, weights_b);
-      uv_distance[i] = std::hypot(p[0] - q[0], p[1] - q[1]) / extent;
-    }
-    if (normals) {
-      const Vector m = interpolated_normal(*in_a.normals, corners_a, s.weights);
-      const Vector n = interpolated_normal(*in_b.normals, corners_b, weights_b);
-      // atan2 rather than acos: exact at 0 and accurate near it.
-      angle[i] =
-          std::atan2(std::sqrt(CGAL::cross_product(m, n).squared_length()), m * n) * 180.0 / M_PI;
-    }
+    const Attributes::Values p = interpolated(in_a, corners_a, s.weights),
+                             q = interpolated(in_b, corners_b, weights_b);
+    if (uvs) uv_distance[i] = std::hypot(p.uv[0] - q.uv[0], p.uv[1] - q.uv[1]) / extent;
+    if (normals) angle[i] = angle_between(p.normal, q.normal);
+    if (colors) color_distances[i] = color_distance(p.color, q.color);
   });
   if (uvs) summarise(uv_distance, error.uv_mean_rel, error.uv_max_rel);
   if (normals) summarise(angle, error.normal_angle_mean_deg, error.normal_angle_max_deg);
+  if (colors) summarise(color_distances, error.color_mean, error.color_max);
   return error;
 }
 

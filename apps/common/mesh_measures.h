@@ -38,6 +38,8 @@ struct Attribute_error {
   std::optional<double> uv_mean_rel, uv_max_rel;
   // Angle between the interpolated normals at the samples, in degrees.
   std::optional<double> normal_angle_mean_deg, normal_angle_max_deg;
+  // Euclidean distance between the interpolated colours (red, green, blue, alpha in [0, 1]).
+  std::optional<double> color_mean, color_max;
   // Seam edges (Corner_attributes::is_seam_edge, borders included) and their connected
   // components.
   std::optional<std::size_t> seam_edges_a, seam_edges_b, seam_loops_a, seam_loops_b;
@@ -100,6 +102,8 @@ void for_each_field(const Attribute_error& error, Visitor&& visit) {
   visit("uv_max_rel", error.uv_max_rel);
   visit("normal_angle_mean_deg", error.normal_angle_mean_deg);
   visit("normal_angle_max_deg", error.normal_angle_max_deg);
+  visit("color_mean", error.color_mean);
+  visit("color_max", error.color_max);
   visit("seam_edges_a", error.seam_edges_a);
   visit("seam_edges_b", error.seam_edges_b);
   visit("seam_loops_a", error.seam_loops_a);

@@ -46,6 +46,18 @@ class Obj_table {
   std::vector<std::array<double, N>> m_order;
 };
 
+// OBJ colours are per point: the first corner of v that has one gives it, as r g b, or r g b a
+// when not opaque.
+void append_vertex_color(std::string& text, const Mesh& mesh, const Attributes::Color_map& colors,
+                         Mesh::Vertex_index v) {
+  for (const auto h : CGAL::halfedges_around_target(v, mesh)) {
+    const Attributes::Color& color = colors[h];
+    if (mesh.is_border(h) || std::isnan(color[0])) continue;
+    for (int k = 0; k < (color[3] == 1 ? 3 : 4); ++k) append_number(text, color[k]);
+    return;
+  }
+}
+
 }  // namespace
 
 std::string obj_text(const Mesh& mesh, const std::vector<std::string>& material_libraries,
@@ -62,6 +74,7 @@ std::string obj_text(const Mesh& mesh, const std::vector<std::string>& material_
     const Point& p = mesh.point(v);
     text += 'v';
     for (double c : {p.x(), p.y(), p.z()}) append_number(text, c);
+    if (attributes.colors) append_vertex_color(text, mesh, *attributes.colors, v);
     text.push_back('\n');
   }
 

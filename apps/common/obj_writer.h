@@ -11,10 +11,11 @@
 namespace apps {
 
 // The text of an OBJ file: `mtllib` lines for `material_libraries` (as given), the points (every
-// number written so that reading it back gives the same double), the distinct texture coordinates
-// and normals of the corners, then the faces in the mesh's order, with a `usemtl` line naming
-// `material_names[i]` wherever the face material changes to i. A corner without a texture
-// coordinate or a normal names none.
+// number written so that reading it back gives the same double; after it the colour, r g b or
+// r g b a, of the point's first corner that has one, as OBJ colours are per point), the distinct
+// texture coordinates and normals of the corners, then the faces in the mesh's order, with a
+// `usemtl` line naming `material_names[i]` wherever the face material changes to i. A corner
+// without a texture coordinate or a normal names none.
 std::string obj_text(const Mesh& mesh, const std::vector<std::string>& material_libraries,
                      const std::vector<std::string>& material_names);
 

@@ -20,6 +20,10 @@ const Policy_options_table<Options>& attribute_options() {
                   Policy_options_table<Options>::unbounded,
                   "normal error against geometric error (1: a normal 0.01 off costs as much as 1% "
                   "of the diagonal)")
+          .number("color-weight", &Options::color_weight, 0,
+                  Policy_options_table<Options>::unbounded,
+                  "colour error against geometric error (1: a colour 0.01 off in each channel "
+                  "costs as much as 1% of the diagonal)")
           .number("seam-weight", &Options::seam_weight, 0, Policy_options_table<Options>::unbounded,
                   "weight of the planes that keep each seam on its course")
           .border_weight();
@@ -41,7 +45,7 @@ Simplify_outcome run_attributes(Mesh& mesh, const Simplify_settings& settings) {
 std::vector<Policy_entry> attribute_policies() {
   return {{"attributes",
            "cgal_policies Attribute_quadric_policies (quadrics over position, texture "
-           "coordinates and normals per wedge; seams kept)",
+           "coordinates, normals and colours per wedge; seams kept)",
            attribute_options().options(), run_attributes}};
 }
 

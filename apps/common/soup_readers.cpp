@@ -7,7 +7,10 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <functional>
+#include <limits>
 #include <optional>
+#include <unordered_map>
 #include <utility>
 
 namespace apps {
@@ -156,6 +159,8 @@ namespace {
 // --- OBJ ---
 
 constexpr std::size_t kNoEntry = Corner_tables::kNoEntry;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr std::array<double, 4> kNoColor{kNaN, kNaN, kNaN, kNaN};
 
 // An OBJ index: counted from 1, or back from the last of the `so_far` entries read when negative.
 // The entry counted from 0; nothing when it is not a whole number, is 0 or counts back too far.
@@ -250,7 +255,21 @@ Polygon_soup parse_obj(const std::string& source, std::string_view bytes) {
     if (keyword == "v") {
       const std::optional<Point> point = next_point(tokens);
       if (!point) fail(source, where() + "a vertex needs three numbers, x y z");
-      soup.points.push_back(*point);  // w or a colour after them is skipped
+      soup.points.push_back(*point);
+      // After x y z: a weight w (skipped), or a colour r g b [a] (MeshLab's and others' custom).
+      std::array<double, 4> color{0, 0, 0, 1};
+      int channels = 0;
+      for (std::string_view token = tokens.next(); !token.empty() && channels < 4;
+           token = tokens.next()) {
+        const std::optional<double> value = number_of<double>(token);
+        if (!value || !std::isfinite(*value))
+          fail(source, where() + "a vertex's colour needs three or four finite numbers");
+        color[std::size_t(channels++)] = *value;
+      }
+      if (channels >= 3) {
+        corners.colors.resize(soup.points.size() - 1, kNoColor);
+        corners.colors.push_back(color);
+      }
     } else if (keyword == "vt") {
       const std::optional<double> u = number_of<double>(tokens.next());
       const std::string_view v_token = tokens.next();
@@ -296,6 +315,10 @@ Polygon_soup parse_obj(const std::string& source, std::string_view bytes) {
   }
   pad_polygon_entries(kNoEntry, soup, corners.polygon_uvs);
   pad_polygon_entries(kNoEntry, soup, corners.polygon_normals);
+  if (!corners.colors.empty()) {  // per point: every corner takes its point's entry
+    corners.colors.resize(soup.points.size(), kNoColor);
+    corners.polygon_colors = soup.polygons;
+  }
   if (!corners.polygon_materials.empty())
     corners.polygon_materials.resize(soup.polygons.size(), Corner_tables::kNoMaterial);
   return soup;
@@ -319,16 +342,23 @@ struct Ply_type {
   const char* sized_name;
   std::size_t size;
   double (*decode)(const unsigned char*);
+  double full_intensity;  // the value of a colour channel at its brightest
 };
 
-const Ply_type kPlyTypes[] = {{"char", "int8", 1, decode_as<std::int8_t>},
-                              {"uchar", "uint8", 1, decode_as<std::uint8_t>},
-                              {"short", "int16", 2, decode_as<std::int16_t>},
-                              {"ushort", "uint16", 2, decode_as<std::uint16_t>},
-                              {"int", "int32", 4, decode_as<std::int32_t>},
-                              {"uint", "uint32", 4, decode_as<std::uint32_t>},
-                              {"float", "float32", 4, decode_as<float>},
-                              {"double", "float64", 8, decode_as<double>}};
+template <typename T>
+constexpr double largest() {
+  return double(std::numeric_limits<T>::max());
+}
+
+const Ply_type kPlyTypes[] = {
+    {"char", "int8", 1, decode_as<std::int8_t>, largest<std::int8_t>()},
+    {"uchar", "uint8", 1, decode_as<std::uint8_t>, largest<std::uint8_t>()},
+    {"short", "int16", 2, decode_as<std::int16_t>, largest<std::int16_t>()},
+    {"ushort", "uint16", 2, decode_as<std::uint16_t>, largest<std::uint16_t>()},
+    {"int", "int32", 4, decode_as<std::int32_t>, largest<std::int32_t>()},
+    {"uint", "uint32", 4, decode_as<std::uint32_t>, largest<std::uint32_t>()},
+    {"float", "float32", 4, decode_as<float>, 1},
+    {"double", "float64", 8, decode_as<double>, 1}};
 
 // The type of that name; nullptr for none.
 const Ply_type* ply_type(std::string_view name) {
@@ -482,7 +512,8 @@ Polygon_soup parse_ply(const std::string& source, std::string_view bytes) {
   for (const Ply_element& element : header.elements) {
     const bool is_vertex = element.name == "vertex", is_face = element.name == "face",
                is_strip = element.name == "tristrips";
-    int xyz_slot[3] = {-1, -1, -1}, normal_slot[3] = {-1, -1, -1}, uv_slot[2] = {-1, -1};
+    int xyz_slot[3] = {-1, -1, -1}, normal_slot[3] = {-1, -1, -1}, uv_slot[2] = {-1, -1},
+        color_slot[4] = {-1, -1, -1, -1};
     if (is_vertex) {
       const auto slot = [&](std::string_view name) {
         for (std::size_t p = 0; p < element.properties.size(); ++p)
@@ -505,6 +536,13 @@ Polygon_soup parse_ply(const std::string& source, std::string_view bytes) {
           uv_slot[0] = slot(u);
           uv_slot[1] = slot(v);
         }
+      // Colours: red, green and blue (alpha if there), with or without MeshLab's "diffuse_".
+      for (const std::string prefix : {"", "diffuse_"}) {
+        if (color_slot[0] >= 0) break;
+        for (int k = 0; k < 4; ++k)
+          color_slot[k] = slot(prefix + std::array{"red", "green", "blue", "alpha"}[k]);
+        if (std::count(color_slot, color_slot + 3, -1) > 0) color_slot[0] = -1;
+      }
       if (std::count(normal_slot, normal_slot + 3, -1) > 0) normal_slot[0] = -1;
       has_points = true;
       soup.points.reserve(element.count);
@@ -514,6 +552,7 @@ Polygon_soup parse_ply(const std::string& source, std::string_view bytes) {
                  std::any_of(element.properties.begin(), element.properties.end(), is_index_list));
     for (std::size_t row = 0; row < element.count; ++row) {
       double xyz[3] = {0, 0, 0}, normal[3] = {0, 0, 0}, uv[2] = {0, 0};
+      std::array<double, 4> color{0, 0, 0, 1};  // opaque unless the file says otherwise
       for (std::size_t p = 0; p < element.properties.size(); ++p) {
         const Ply_property& property = element.properties[p];
         if (!property.count_type) {
@@ -524,6 +563,8 @@ Polygon_soup parse_ply(const std::string& source, std::string_view bytes) {
           }
           for (int k = 0; k < 2; ++k)
             if (uv_slot[k] == int(p)) uv[k] = value;
+          for (int k = 0; k < 4; ++k)
+            if (color_slot[k] == int(p)) color[k] = value / property.type->full_intensity;
           continue;
         }
         const double count = values.next(*property.count_type);
@@ -555,6 +596,11 @@ Polygon_soup parse_ply(const std::string& source, std::string_view bytes) {
           fail(source, "vertex " + std::to_string(row) + ": its texture coordinate is not finite");
         soup.corners.uvs.push_back({uv[0], uv[1]});
       }
+      if (color_slot[0] >= 0) {
+        if (!std::all_of(color.begin(), color.end(), [](double c) { return std::isfinite(c); }))
+          fail(source, "vertex " + std::to_string(row) + ": its colour is not finite");
+        soup.corners.colors.push_back(color);
+      }
     }
   }
   if (!has_points) fail(source, "no vertex element");
@@ -562,7 +608,37 @@ Polygon_soup parse_ply(const std::string& source, std::string_view bytes) {
   // Per-vertex values: every corner takes its vertex's entry.
   if (!soup.corners.normals.empty()) soup.corners.polygon_normals = soup.polygons;
   if (!soup.corners.uvs.empty()) soup.corners.polygon_uvs = soup.polygons;
+  if (!soup.corners.colors.empty()) soup.corners.polygon_colors = soup.polygons;
   return soup;
+}
+
+void join_equal_points(Polygon_soup& soup) {
+  // Hashes the exact bits, with -0 made +0 so that equal coordinates share a hash.
+  struct Point_hash {
+    std::size_t operator()(const Point& p) const {
+      std::size_t hash = 0;
+      for (const double c : {p.x() + 0.0, p.y() + 0.0, p.z() + 0.0}) {
+        std::uint64_t bits;
+        std::memcpy(&bits, &c, sizeof bits);
+        hash = (hash ^ std::hash<std::uint64_t>()(bits)) * 0x9E3779B97F4A7C15ull;
+      }
+      return hash;
+    }
+  };
+  std::unordered_map<Point, std::size_t, Point_hash> number_of_point;
+  number_of_point.reserve(soup.points.size());
+  std::vector<std::size_t> joined(soup.points.size());
+  std::vector<Point> points;
+  for (std::size_t i = 0; i < soup.points.size(); ++i) {
+    const auto [it, added] = number_of_point.emplace(soup.points[i], points.size());
+    if (added) points.push_back(soup.points[i]);
+    joined[i] = it->second;
+  }
+  if (points.size() == soup.points.size()) return;
+  for (auto& polygon : soup.polygons)
+    for (std::size_t& index : polygon)
+      if (index < joined.size()) index = joined[index];  // one out of range is reported later
+  soup.points = std::move(points);
 }
 
 }  // namespace apps

@@ -20,7 +20,8 @@
 namespace apps {
 
 // What an OBJ (or PLY) file's corners and faces carry besides their points: its tables of texture
-// coordinates and normals, and for each polygon the table entry of each corner (kNoEntry where
+// coordinates, normals and colours (red, green, blue, alpha in [0, 1]), and for each polygon the
+// table entry of each corner (kNoEntry where
 // the corner names none; the lists are empty when no corner names one); its material libraries as
 // the file names them, the material names its faces use, and each polygon's material (an index
 // into the names, or kNoMaterial; empty when no face has one).
@@ -29,7 +30,8 @@ struct Corner_tables {
   static constexpr std::uint32_t kNoMaterial = std::uint32_t(-1);
   std::vector<std::array<double, 2>> uvs;
   std::vector<Kernel::Vector_3> normals;
-  std::vector<std::vector<std::size_t>> polygon_uvs, polygon_normals;
+  std::vector<std::array<double, 4>> colors;
+  std::vector<std::vector<std::size_t>> polygon_uvs, polygon_normals, polygon_colors;
   std::vector<std::string> material_libraries, material_names;
   std::vector<std::uint32_t> polygon_materials;
 };
@@ -40,7 +42,8 @@ struct Polygon_soup {
   Corner_tables corners;  // OBJ and PLY
 };
 
-// OBJ: points from "v" lines (x y z; a w or colour after them is skipped), polygons from "f"
+// OBJ: points from "v" lines (x y z; then a w, skipped, or a colour r g b [a], kept as a per-point
+// entry of the corner tables, NaN for points without one), polygons from "f"
 // lines, whose corners may name a texture coordinate ("vt u v") and a normal ("vn x y z") as
 // v/vt, v//vn or v/vt/vn, each counted from 1 or back from the last one read when negative;
 // "mtllib" and "usemtl" lines. Other lines are skipped. Throws
@@ -53,12 +56,21 @@ Polygon_soup parse_obj(const std::string& source, std::string_view bytes);
 Polygon_soup parse_off(const std::string& source, std::string_view bytes);
 
 // PLY, ASCII or binary of either byte order: x, y, z of the "vertex" element, of any scalar type,
-// and its normal (nx, ny, nz) and texture coordinates (s, t; u, v; texture_u, texture_v or
-// texture_s, texture_t) when it has them, as per-vertex entries of the corner tables; faces from
+// and its normal (nx, ny, nz), texture coordinates (s, t; u, v; texture_u, texture_v or
+// texture_s, texture_t) and colour (red, green, blue and maybe alpha, or the same with "diffuse_";
+// an integer channel is scaled by its type's largest value, a float one kept) when it has them, as
+// per-vertex entries of the corner tables; faces from
 // the "face" element's vertex_indices (or vertex_index) list, or from the "tristrips" element's
 // list, where -1 restarts the strip. Other elements and properties are skipped. Throws
 // App_error(exit_bad_input, "<source>: <cause>").
 Polygon_soup parse_ply(const std::string& source, std::string_view bytes);
+
+// Formats that store attributes per vertex (PLY, glTF) split a vertex on a seam into one vertex
+// per side, at the same point. This joins the points that are exactly equal into one, numbered in
+// the order of their first appearance, and renumbers the polygons; the corner tables keep naming
+// the entries of the split vertices, so every corner keeps its values and the seam becomes corners
+// that disagree. Call it after the corner tables are complete.
+void join_equal_points(Polygon_soup& soup);
 
 }  // namespace apps
 

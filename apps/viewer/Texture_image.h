@@ -2,6 +2,7 @@
 #ifndef CGAL_POLICIES_APPS_VIEWER_TEXTURE_IMAGE_H
 #define CGAL_POLICIES_APPS_VIEWER_TEXTURE_IMAGE_H
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -14,6 +15,10 @@ struct Texture_image {
 
   // Throws App_error(exit_bad_input, "<path>: <cause>") when the file is not an image stb reads.
   static Texture_image load(const std::string& path);
+
+  // The colour (red, green, blue in [0, 1]) at texture coordinates (u, v), v = 0 being the bottom
+  // row, filtered as the renderer draws it: bilinear between texel centres, clamped at the edges.
+  std::array<double, 3> color_at(double u, double v) const;
 };
 
 }  // namespace apps

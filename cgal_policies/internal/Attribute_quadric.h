@@ -20,7 +20,8 @@ namespace internal {
 
 class Attribute_quadric {
  public:
-  static constexpr int kMaxAttributes = 5;  // two texture coordinates and a normal
+  // Two texture coordinates, a normal and a colour (red, green, blue, alpha).
+  static constexpr int kMaxAttributes = 9;
   using Attributes = Eigen::Matrix<double, kMaxAttributes, 1>;
 
   Attribute_quadric()
