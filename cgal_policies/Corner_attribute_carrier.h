@@ -13,7 +13,10 @@
 // The new corner values around the kept vertex are interpolated at its new point on the old star,
 // one side of each seam at a time: each corner takes the value at the closest point of the faces it
 // can reach around the two old vertices without crossing a seam edge. A policy that solves the
-// values itself (Solver) gives them for collapses between two free vertices.
+// values itself (Solver) gives them for collapses between two free vertices. A policy whose filter
+// picks the point itself among several (Hausdorff_bounded_policies) asks allows() of each, and the
+// values are interpolated at the point the filter accepted (accepted()), wherever CGAL puts the
+// vertex first.
 #ifndef CGAL_POLICIES_CORNER_ATTRIBUTE_CARRIER_H
 #define CGAL_POLICIES_CORNER_ATTRIBUTE_CARRIER_H
 
@@ -89,6 +92,20 @@ class Corner_attribute_carrier {
     return std::nullopt;
   }
 
+  // Whether the collapse of `edge` (its source into its target) may put the kept vertex at x: where
+  // the seam rules put it, turning no texture triangle over.
+  bool allows(Halfedge edge, const Point& x) const {
+    const Edge_view view{m_mesh, edge};
+    const std::optional<Point> allowed = seam_placement(view, x);
+    return allowed && *allowed == x && keeps_uv_orientation(view, x);
+  }
+
+  // The filter accepted the collapse of the profile's edge at x: its values are interpolated there.
+  template <class Profile>
+  void accepted(const Profile& profile, const Point& x) const {
+    m_accepted = Accepted_collapse{profile.v0_v1(), x};
+  }
+
   // False when the collapse to `placement` turns a texture triangle over or makes it flat.
   template <class Profile>
   bool keeps_uv_orientation(const Profile& profile, const Point& placement) const {
@@ -113,7 +130,10 @@ class Corner_attribute_carrier {
     if (m_solver.before_collapse) m_solver.before_collapse(profile.v0_v1());
     m_unmoved.clear();  // the zero-length collapses are over
     m_pending.clear();
-    for (const Corner_value& value : corner_values_of(profile, placement)) {
+    const Point x =
+        m_accepted && m_accepted->edge == profile.v0_v1() ? m_accepted->point : placement;
+    m_accepted.reset();
+    for (const Corner_value& value : corner_values_of(profile, x)) {
       const Halfedge h = value.corner, b = m_mesh->next(h), c = m_mesh->prev(h);
       Pending_face pending{value.face,
                            {value, stored_value(b), stored_value(c)},
@@ -173,6 +193,22 @@ class Corner_attribute_carrier {
   }
 
  private:
+  // What a profile of CGAL's gives the rules, for an edge alone.
+  struct Edge_view {
+    const Mesh* mesh;
+    Halfedge edge;
+    Halfedge v0_v1() const { return edge; }
+    Vertex v0() const { return mesh->source(edge); }
+    Vertex v1() const { return mesh->target(edge); }
+    const Point& p0() const { return mesh->point(v0()); }
+    const Point& p1() const { return mesh->point(v1()); }
+  };
+
+  struct Accepted_collapse {
+    Halfedge edge;
+    Point point;
+  };
+
   struct Corner_value {
     Face face;
     Halfedge corner;  // before the collapse
@@ -370,6 +406,7 @@ class Corner_attribute_carrier {
   std::map<Face, Face_values> m_unmoved;  // faces around edges of zero length, until the loop
   mutable std::vector<std::size_t> m_seam_counts;  // kUnknown until asked
   mutable std::optional<Checked_collapse> m_checked;
+  mutable std::optional<Accepted_collapse> m_accepted;  // until the collapse it names, or another
 };
 
 }  // namespace cgal_policies

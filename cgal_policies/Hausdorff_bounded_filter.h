@@ -77,6 +77,7 @@ class Hausdorff_bounded_filter {
       candidates = internal::collapse_candidates(
           profile, internal::border_case(profile, m_options.border), preferred, m_options.steps);
     const auto acceptable = [&](const Eigen::Vector3d& p) {
+      if (!m_state->allows(profile.v0_v1(), p)) return false;
       return !m_search ||
              bool(m_flip(profile, internal::Optional<Point>(internal::to_point<Point>(p))));
     };

@@ -91,6 +91,16 @@ class Hausdorff_bounded_policies {
   // tau, in the mesh's units.
   double tolerance() const { return m_state.tolerance(); }
 
+  // Lets the filter pick only points the seam rules of `carrier` (a Corner_attribute_carrier of
+  // the mesh) allow. Call before edge_collapse, with the carrier's Seam_keeping_placement and
+  // Seam_keeping_filter around these policies (edge_collapse_runner.h).
+  template <typename Carrier>
+  void keep_seams_with(const Carrier& carrier) {
+    m_state.set_candidate_rule([&carrier](auto edge, const Eigen::Vector3d& p) {
+      return carrier.allows(edge, internal::to_point<typename Carrier::Mesh::Point>(p));
+    });
+  }
+
  private:
   Shared_state m_state;
   Classic_quadric_policies<TriangleMesh, GeomTraits> m_quadrics;  // shared by cost and placement

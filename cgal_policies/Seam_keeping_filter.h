@@ -1,6 +1,7 @@
 // A Filter for CGAL's edge_collapse that refuses a collapse turning a texture triangle over
-// (Corner_attribute_carrier.h), then asks the wrapped filter. Without a carrier it is the wrapped
-// filter.
+// (Corner_attribute_carrier.h), then asks the wrapped filter, and tells the carrier the point the
+// wrapped filter accepted (Hausdorff_bounded_filter picks one of its own). Without a carrier it is
+// the wrapped filter.
 #ifndef CGAL_POLICIES_SEAM_KEEPING_FILTER_H
 #define CGAL_POLICIES_SEAM_KEEPING_FILTER_H
 
@@ -19,8 +20,11 @@ class Seam_keeping_filter {
   template <class Profile>
   internal::Optional<Point> operator()(const Profile& profile,
                                        const internal::Optional<Point>& placement) const {
-    if (placement && m_carrier && !m_carrier->keeps_uv_orientation(profile, *placement)) return {};
-    return m_base(profile, placement);
+    if (!m_carrier) return m_base(profile, placement);
+    if (placement && !m_carrier->keeps_uv_orientation(profile, *placement)) return {};
+    const internal::Optional<Point> accepted = m_base(profile, placement);
+    if (accepted) m_carrier->accepted(profile, *accepted);
+    return accepted;
   }
 
  private:

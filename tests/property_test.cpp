@@ -534,8 +534,8 @@ INSTANTIATE_TEST_SUITE_P(ShippedMeshes, PinnedResults,
 // (cgal_policies/Corner_attribute_carrier.h).
 using Attributes = cgal_policies::Corner_attributes<Point>;
 
-const std::vector<std::string> kCarryingPolicies = {"gh",        "gh-prob", "lt",        "classic",
-                                                    "curvature", "fusion",  "attributes"};
+const std::vector<std::string> kCarryingPolicies = {
+    "gh", "gh-prob", "lt", "classic", "curvature", "fusion", "hausdorff", "attributes"};
 
 TEST(CarriedAttributes, ALinearFieldOnAFlatMeshIsReproducedExactly) {
   const auto field = [](Mesh::Face_index, const Point& p) {
@@ -659,7 +659,13 @@ TEST(CarriedAttributes, SpotKeepsItsSeamCornersAndTurnsNoTextureTriangleOver) {
   for (const std::string& policy : kCarryingPolicies) {
     Mesh mesh = input;
     const std::size_t target = input.number_of_faces() / 10;
-    simplify(mesh, policy, target);
+    const apps::Policy_entry* entry = apps::find_policy(policy);
+    apps::Simplify_settings settings = apps::default_settings(*entry, target);
+    // hausdorff's default bound, with the seams held, stops it short of this target
+    // (docs/attributes.md).
+    if (policy == "hausdorff") settings.options["tolerance"] = 0.01;
+    entry->run(mesh, settings);
+    mesh.collect_garbage();
     EXPECT_LE(mesh.number_of_faces(), target) << policy;
     std::set<std::array<double, 3>> kept;
     for (auto v : vertices(mesh))

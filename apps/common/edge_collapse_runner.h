@@ -63,10 +63,6 @@ enum class Error_bound_keeper {
   policy   // the policy bounds its error itself (hausdorff)
 };
 
-// Whether a policy's collapses can carry corner attributes: not when it moves the kept vertex
-// after the collapse, away from the point the attributes were interpolated at (hausdorff).
-enum class Attribute_carrying { interpolate, none };
-
 // The collapse the visitor has seen but not reported yet: a cost's update_after_collapse may still
 // move the kept vertex after OnCollapsed. Outlives the run, since edge_collapse copies the visitor.
 struct Pending_collapse {
@@ -122,19 +118,19 @@ class Progress_visitor
 // as it is now (the input), in both directions, and the collapse refused otherwise; the run then
 // ends at the target or when no collapse keeps the bound (error_bound_reached). The seam rules
 // wrap every policy's placement and filter, and pass everything through when there is nothing to
-// carry (one instantiation of edge_collapse per policy either way).
+// carry (one instantiation of edge_collapse per policy either way). `with_carrier` gets the carrier
+// before the run when there is something to carry, for a policy that solves the values or picks the
+// point itself.
 template <typename GetCost, typename GetPlacement, typename Filter>
 Simplify_outcome run_edge_collapse(
     Mesh& mesh, const Simplify_settings& settings, const GetCost& cost,
     const GetPlacement& base_placement, const Filter& base_filter,
     Error_bound_keeper keeper = Error_bound_keeper::runner,
-    Attribute_carrying carrying = Attribute_carrying::interpolate,
-    const std::function<void(Attribute_carrier&)>& solve_attributes = {}) {
+    const std::function<void(Attribute_carrier&)>& with_carrier = {}) {
   const Stopwatch watch;
   Attribute_carrier carrier(mesh);
-  Attribute_carrier* const carried =
-      carrying == Attribute_carrying::interpolate && carrier.active() ? &carrier : nullptr;
-  if (carried && solve_attributes) solve_attributes(*carried);
+  Attribute_carrier* const carried = carrier.active() ? &carrier : nullptr;
+  if (carried && with_carrier) with_carrier(*carried);
   const cgal_policies::Seam_keeping_placement<Point, GetPlacement> placement(base_placement,
                                                                              carried);
   using Filter_keeping_seams = cgal_policies::Seam_keeping_filter<Point, Filter>;

@@ -36,7 +36,7 @@ Simplify_outcome run_attributes(Mesh& mesh, const Simplify_settings& settings) {
   return run_edge_collapse(
       mesh, settings, policies.get_cost(), policies.get_placement(),
       cgal_policies::Bounded_normal_angle_filter<>(settings.max_normal_angle_deg),
-      Error_bound_keeper::runner, Attribute_carrying::interpolate,
+      Error_bound_keeper::runner,
       [&policies](Attribute_carrier& carrier) { policies.carry_with(carrier); });
 }
 

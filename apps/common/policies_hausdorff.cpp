@@ -38,10 +38,11 @@ Simplify_outcome run_hausdorff(Mesh& mesh, const Simplify_settings& settings) {
   // the input, so the runner's filter keeps --max-error, as for the other policies.
   const bool local = options.reference == cgal_policies::Hausdorff_reference::local;
   if (settings.max_error > 0 && !local) options.beta = std::min(options.beta, settings.max_error);
-  const cgal_policies::Hausdorff_bounded_policies<Mesh, Kernel> hausdorff(mesh, options);
+  cgal_policies::Hausdorff_bounded_policies<Mesh, Kernel> hausdorff(mesh, options);
   return run_edge_collapse(
       mesh, settings, hausdorff.get_cost(), hausdorff.get_placement(), hausdorff.get_filter(),
-      local ? Error_bound_keeper::runner : Error_bound_keeper::policy, Attribute_carrying::none);
+      local ? Error_bound_keeper::runner : Error_bound_keeper::policy,
+      [&hausdorff](Attribute_carrier& carrier) { hausdorff.keep_seams_with(carrier); });
 }
 
 }  // namespace

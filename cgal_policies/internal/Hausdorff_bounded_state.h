@@ -16,6 +16,8 @@
 
 #include <CGAL/assertions.h>
 
+#include <functional>
+#include <utility>
 #include <vector>
 
 namespace cgal_policies {
@@ -24,6 +26,7 @@ namespace internal {
 template <typename TriangleMesh>
 class Hausdorff_bounded_state {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
 
  public:
   // `input` is the reference and `tracked` the mesh that changes (it may be the same one).
@@ -59,6 +62,14 @@ class Hausdorff_bounded_state {
 
   // Alone, a filter's collapses go unreported: commit a choice when the next one is asked for.
   void defer_commits() { m_deferred_commits = true; }
+
+  // A rule every candidate point of a collapse must also pass (the seam rules of a corner
+  // attribute carrier); none by default.
+  using Candidate_rule = std::function<bool(halfedge_descriptor edge, const Eigen::Vector3d& p)>;
+  void set_candidate_rule(Candidate_rule rule) { m_candidate_rule = std::move(rule); }
+  bool allows(halfedge_descriptor edge, const Eigen::Vector3d& p) const {
+    return !m_candidate_rule || m_candidate_rule(edge, p);
+  }
 
   // The best-ranked of `candidates` certified within the tolerance, after `acceptable` (the flip
   // check); it stays pending until commit_collapse().
@@ -136,6 +147,7 @@ class Hausdorff_bounded_state {
   Hausdorff_certifier m_certifier;
   Hausdorff_pending_choice<TriangleMesh> m_pending;
   bool m_deferred_commits = false;
+  Candidate_rule m_candidate_rule;
 };
 
 }  // namespace internal
