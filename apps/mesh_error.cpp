@@ -23,9 +23,10 @@ void print_help() {
                "  --samples N   random face samples per direction, fixed seed (default "
             << kDefaultErrorSamples
             << "); every vertex is sampled too\n"
-               "  --attributes  also compare the corner attributes of B with A's (OBJ, PLY):\n"
-               "                texture coordinates relative to A's texture extent, normal\n"
-               "                angles, colour distances, seams and flipped texture triangles;\n"
+               "  --attributes  also compare the corner attributes of B with A's (OBJ, PLY,\n"
+               "                glTF): texture coordinates relative to A's texture extent,\n"
+               "                normal angles, colour distances, seams and flipped texture\n"
+               "                triangles;\n"
                "                each figure only when both files have what it compares\n"
                "                (docs/evaluation.md)\n"
                "  --json        print one JSON object on stdout\n";

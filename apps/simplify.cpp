@@ -34,9 +34,10 @@ namespace {
 void print_help() {
   std::cout
       << "usage: simplify IN OUT [RATIO] [options]\n"
-         "Simplifies the triangle mesh IN (.off .obj .ply .stl) and writes OUT. An OBJ or\n"
-         "PLY OUT keeps IN's texture coordinates, normals and colours, seams included, and\n"
-         "an OBJ OUT its materials (fast keeps the materials alone).\n\n"
+         "Simplifies the triangle mesh IN (.off .obj .ply .stl .gltf .glb) and writes OUT.\n"
+         "An OBJ, PLY or glTF (.gltf .glb) OUT keeps IN's texture coordinates, normals and\n"
+         "colours, seams included, and an OBJ or glTF OUT its materials (fast keeps the\n"
+         "materials alone); a glTF OUT of a glTF IN keeps their textures and images too.\n\n"
          "  RATIO, --ratio R      keep this fraction of the faces, 0 < R <= 1\n"
          "  --faces N             keep N faces instead\n"
          "  --policy NAME         "
@@ -160,7 +161,7 @@ int run(int argc, char** argv) {
 
   Read_report read_report;
   const Stopwatch reading;
-  // Only an OBJ or PLY output can hold texture coordinates, normals and colours.
+  // Only an OBJ, PLY or glTF output can hold texture coordinates, normals and colours.
   Mesh mesh = read_triangle_mesh(input, &read_report,
                                  writes_corner_attributes(output) ? Corner_attribute_reading::keep
                                                                   : Corner_attribute_reading::drop);
@@ -263,7 +264,8 @@ int run(int argc, char** argv) {
     error = measure_mesh_error(original, mesh, samples);
     add_fields(report, error);
     add_fields(report, check_mesh_validity(mesh));
-    // IN keeps its corner attributes only for an OBJ OUT; a dropping run leaves none to compare.
+    // IN keeps its corner attributes only for an OBJ, PLY or glTF OUT; a dropping run leaves none
+    // to compare.
     if (input_had_corner_values)
       add_fields(report, measure_attribute_error(original, mesh, samples));
   }

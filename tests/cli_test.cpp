@@ -5,6 +5,7 @@
 
 #include "common/App_error.h"
 #include "common/clean_triangle_soup.h"
+#include "common/gltf_io.h"
 #include "common/mesh_io.h"
 #include "common/mesh_measures.h"
 #include "common/obj_writer.h"
@@ -20,6 +21,7 @@
 #include <cgal_policies/Corner_attributes.h>
 
 #include <gtest/gtest.h>
+#include <tiny_gltf.h>
 
 #include <fcntl.h>
 #include <signal.h>
@@ -41,6 +43,7 @@
 #include <regex>
 #include <sstream>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 namespace {
@@ -1415,6 +1418,401 @@ TEST_F(Cli, SimplifyCarriesTextureCoordinatesIntoAnObjOrSaysItDropsThem) {
   EXPECT_FALSE(Attributes(apps::read_triangle_mesh(out.string(), nullptr,
                                                    apps::Corner_attribute_reading::keep))
                    .uvs.has_value());
+}
+
+// ---------------------------------------------------------------------------------------------
+// glTF (.gltf, .glb): corners per glTF vertex, points welded, materials and images passed through.
+
+// Each value as glTF stores it: through float.
+std::vector<Face_corners> through_float(std::vector<Face_corners> faces) {
+  for (Face_corners& face : faces)
+    for (auto& corner : face.corners)
+      for (double& c : corner) c = double(float(c));
+  return faces;
+}
+
+std::vector<Face_corners> sorted(std::vector<Face_corners> faces) {
+  std::sort(faces.begin(), faces.end(), [](const Face_corners& a, const Face_corners& b) {
+    return std::tie(a.corners, a.material) < std::tie(b.corners, b.material);
+  });
+  return faces;
+}
+
+std::size_t seam_edge_count(const Mesh& mesh) {
+  const Attributes a(mesh);
+  std::size_t seams = 0;
+  for (const auto e : mesh.edges()) seams += a.is_seam_edge(mesh, mesh.halfedge(e));
+  return seams;
+}
+
+// six_sided_cube() moved off the float grid, each side its own texture chart, its normal, its
+// colour and one of two materials.
+Mesh painted_cube() {
+  Mesh mesh = test_meshes::six_sided_cube();
+  for (const auto v : mesh.vertices())
+    mesh.point(v) = mesh.point(v) + apps::Kernel::Vector_3(0.1, 0.2, 1.0 / 3);
+  const Attributes a = Attributes::add(mesh, {true, true, true, true});
+  for (const auto f : mesh.faces()) {
+    const int side = test_meshes::cube_side(mesh, f);
+    (*a.materials)[f] = std::uint32_t(side % 2);
+    const auto n = CGAL::Polygon_mesh_processing::compute_face_normal(f, mesh);
+    for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      const apps::Point p = mesh.point(mesh.target(h)) - apps::Kernel::Vector_3(0.1, 0.2, 1.0 / 3);
+      (*a.uvs)[h] = test_meshes::cube_chart(side, p);
+      (*a.uvs)[h][1] += 1.0 / 7;
+      (*a.normals)[h] = n;
+      (*a.colors)[h] = {side / 7.0, 0.3, 1.0 / 3, 0.9};
+    }
+  }
+  return mesh;
+}
+
+TEST(Gltf, ARoundTripKeepsEveryCornerToFloatPrecision) {
+  const fs::path folder = scratch_folder("gltf_round_trip");
+  const Mesh cube = painted_cube();
+  const apps::Material_references names{{}, {"even", "odd"}, nullptr};
+  for (const std::string name : {"cube.gltf", "cube.glb"}) {
+    SCOPED_TRACE(name);
+    const fs::path out = folder / name;
+    apps::write_mesh_atomically(cube, out.string(), names);
+    apps::Read_report report;
+    const Mesh read =
+        apps::read_triangle_mesh(out.string(), &report, apps::Corner_attribute_reading::keep);
+    EXPECT_TRUE(report.repairs.empty());
+    // One closed surface: the seams split no vertex of the mesh.
+    EXPECT_EQ(read.number_of_vertices(), cube.number_of_vertices());
+    EXPECT_EQ(read.number_of_faces(), 192u);
+    EXPECT_EQ(test_meshes::border_edge_count(read), 0u);
+    EXPECT_EQ(sorted(face_corners(read)), sorted(through_float(face_corners(cube))));
+    EXPECT_EQ(seam_edge_count(read), 48u);  // the cube's 12 edges, 4 mesh edges each
+    EXPECT_EQ(seam_edge_count(read), seam_edge_count(cube));
+    EXPECT_EQ(report.materials.names, names.names);
+    ASSERT_TRUE(report.materials.gltf);
+    EXPECT_EQ(report.materials.gltf->materials.size(), 2u);
+  }
+  fs::remove_all(folder);
+}
+
+// A glTF model whose buffer 0 gets each array as an accessor of its own.
+class Gltf_builder {
+ public:
+  Gltf_builder() {
+    model.buffers.resize(1);
+    model.asset.version = "2.0";
+  }
+  template <class T>
+  int accessor(const std::vector<T>& values, int component_type, int type,
+               bool normalized = false) {
+    std::vector<unsigned char>& data = model.buffers[0].data;
+    tinygltf::BufferView view;
+    view.buffer = 0;
+    view.byteOffset = data.size();
+    view.byteLength = values.size() * sizeof(T);
+    const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
+    data.insert(data.end(), bytes, bytes + view.byteLength);
+    data.resize((data.size() + 3) / 4 * 4);
+    model.bufferViews.push_back(view);
+    tinygltf::Accessor a;
+    a.bufferView = int(model.bufferViews.size() - 1);
+    a.componentType = component_type;
+    a.type = type;
+    a.normalized = normalized;
+    a.count = values.size() / std::size_t(tinygltf::GetNumComponentsInType(std::uint32_t(type)));
+    model.accessors.push_back(a);
+    return int(model.accessors.size() - 1);
+  }
+  // One mesh of these primitives, under one node moved by `translation`.
+  void place(std::vector<tinygltf::Primitive> primitives, std::vector<double> translation) {
+    model.meshes.emplace_back();
+    model.meshes.back().primitives = std::move(primitives);
+    model.nodes.emplace_back();
+    model.nodes.back().mesh = 0;
+    model.nodes.back().translation = std::move(translation);
+    model.scenes.emplace_back();
+    model.scenes.back().nodes = {0};
+    model.defaultScene = 0;
+  }
+  void write(const fs::path& path) const {
+    std::ofstream file(path, std::ios::binary);
+    tinygltf::TinyGLTF().WriteGltfSceneToStream(&model, file, false, path.extension() == ".glb");
+  }
+  tinygltf::Model model;
+};
+
+tinygltf::Primitive triangles(int position, int indices, int uv, int material) {
+  tinygltf::Primitive p;
+  p.mode = TINYGLTF_MODE_TRIANGLES;
+  p.attributes["POSITION"] = position;
+  if (uv >= 0) p.attributes["TEXCOORD_0"] = uv;
+  p.indices = indices;
+  p.material = material;
+  return p;
+}
+
+constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
+
+// The unit square as two primitives that share no vertex: the first indexed by u16 with float
+// texture coordinates (x, y) / 2 and normalized u8 RGB colours, the second without indices or
+// colours, with normalized u16 texture coordinates that agree at (0, 0) and differ at (1, 1), so
+// that the diagonal is a seam.
+Gltf_builder two_primitive_square() {
+  Gltf_builder b;
+  const int first =
+      b.accessor(std::vector<float>{0, 0, 0, 1, 0, 0, 1, 1, 0}, kFloat, TINYGLTF_TYPE_VEC3);
+  const int first_indices =
+      b.accessor(std::vector<std::uint16_t>{0, 1, 2}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                 TINYGLTF_TYPE_SCALAR);
+  const int first_uvs =
+      b.accessor(std::vector<float>{0, 0, 0.5f, 0, 0.5f, 0.5f}, kFloat, TINYGLTF_TYPE_VEC2);
+  const int second =
+      b.accessor(std::vector<float>{0, 0, 0, 1, 1, 0, 0, 1, 0}, kFloat, TINYGLTF_TYPE_VEC3);
+  const int second_uvs =
+      b.accessor(std::vector<std::uint16_t>{0, 0, 52428, 52428, 0, 65535},
+                 TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_VEC2, true);
+  tinygltf::Primitive colored = triangles(first, first_indices, first_uvs, 0);
+  colored.attributes["COLOR_0"] =
+      b.accessor(std::vector<std::uint8_t>{0, 51, 255, 0, 51, 255, 0, 51, 255},
+                 TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_TYPE_VEC3, true);
+  b.model.materials.resize(2);
+  b.model.materials[0].name = "paint";
+  b.place({colored, triangles(second, -1, second_uvs, 1)}, {10, 0, 0});
+  return b;
+}
+
+TEST(Gltf, TwoPrimitivesWithAUvSeamAreOneConnectedMesh) {
+  const fs::path folder = scratch_folder("gltf_seam");
+  const fs::path in = folder / "square.glb";
+  two_primitive_square().write(in);
+  apps::Read_report report;
+  const Mesh mesh =
+      apps::read_triangle_mesh(in.string(), &report, apps::Corner_attribute_reading::keep);
+  EXPECT_TRUE(report.repairs.empty());
+  ASSERT_EQ(mesh.number_of_faces(), 2u);
+  EXPECT_EQ(mesh.number_of_vertices(), 4u);
+  EXPECT_EQ(test_meshes::border_edge_count(mesh), 4u);  // the diagonal joins the two
+  EXPECT_EQ(report.materials.names, (std::vector<std::string>{"paint", "material_1"}));
+  const Attributes a(mesh);
+  ASSERT_TRUE(a.uvs && a.materials);
+  EXPECT_FALSE(a.normals);
+  // The node's translation moved the points; the second primitive's corners are its own.
+  const auto diagonal =
+      test_meshes::halfedge_between(mesh, apps::Point(10, 0, 0), apps::Point(11, 1, 0));
+  const auto other = mesh.opposite(diagonal);
+  EXPECT_TRUE(a.is_seam_edge(mesh, diagonal));
+  const Mesh::Halfedge_index in_first = (*a.materials)[mesh.face(diagonal)] == 0 ? diagonal : other;
+  const Mesh::Halfedge_index in_second = in_first == diagonal ? other : diagonal;
+  EXPECT_EQ((*a.materials)[mesh.face(in_second)], 1u);
+  const auto corner_at = [&](Mesh::Halfedge_index h, const apps::Point& p) {
+    return mesh.point(mesh.target(h)) == p ? h : mesh.prev(h);
+  };
+  EXPECT_EQ((*a.uvs)[corner_at(in_first, {11, 1, 0})], (Attributes::Uv{0.5, 0.5}));
+  EXPECT_EQ((*a.uvs)[corner_at(in_second, {11, 1, 0})], (Attributes::Uv{0.8, 0.8}));
+  EXPECT_EQ((*a.uvs)[corner_at(in_first, {10, 0, 0})], (Attributes::Uv{0, 0}));
+  EXPECT_EQ((*a.uvs)[corner_at(in_second, {10, 0, 0})], (Attributes::Uv{0, 0}));
+  // Colours: the first primitive's, RGB with alpha 1; none on the second's corners.
+  ASSERT_TRUE(a.colors);
+  EXPECT_EQ((*a.colors)[corner_at(in_first, {10, 0, 0})], (Attributes::Color{0, 0.2, 1, 1}));
+  EXPECT_TRUE(std::isnan((*a.colors)[corner_at(in_second, {10, 0, 0})][0]));
+  fs::remove_all(folder);
+}
+
+// A node's world transform: a child turned a quarter about z and mirrored in x, under a parent
+// moved up by 5. The mirror turns the winding, so the reader turns the triangle back to face its
+// normal, which the transform leaves at +z.
+TEST(Gltf, NodeTransformsPlaceTurnAndMirror) {
+  const fs::path folder = scratch_folder("gltf_nodes");
+  Gltf_builder b;
+  const int position =
+      b.accessor(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0}, kFloat, TINYGLTF_TYPE_VEC3);
+  tinygltf::Primitive primitive = triangles(position, -1, -1, -1);
+  primitive.attributes["NORMAL"] =
+      b.accessor(std::vector<float>{0, 0, 1, 0, 0, 1, 0, 0, 1}, kFloat, TINYGLTF_TYPE_VEC3);
+  b.place({primitive}, {0, 0, 5});
+  b.model.nodes[0].mesh = -1;
+  b.model.nodes[0].children = {1};
+  b.model.nodes.emplace_back();
+  b.model.nodes[1].mesh = 0;
+  b.model.nodes[1].rotation = {0, 0, std::sqrt(0.5), std::sqrt(0.5)};
+  b.model.nodes[1].scale = {-1, 1, 1};
+  b.write(folder / "turned.gltf");
+  const Mesh mesh = apps::read_triangle_mesh((folder / "turned.gltf").string(), nullptr,
+                                             apps::Corner_attribute_reading::keep);
+  ASSERT_EQ(mesh.number_of_faces(), 1u);
+  // The quarter turn's sines and cosines are rounded: the points snapped to a 1e-12 grid.
+  const auto snap = [](double x) { return std::round(x * 1e12) / 1e12; };
+  std::vector<std::array<double, 3>> points;
+  for (const auto v : mesh.vertices())
+    points.push_back({snap(mesh.point(v).x()), snap(mesh.point(v).y()), snap(mesh.point(v).z())});
+  std::sort(points.begin(), points.end());
+  EXPECT_EQ(points, (std::vector<std::array<double, 3>>{{-1, 0, 5}, {0, -1, 5}, {0, 0, 5}}));
+  const auto face_normal =
+      CGAL::Polygon_mesh_processing::compute_face_normal(*mesh.faces().begin(), mesh);
+  EXPECT_NEAR(face_normal.z(), 1, 1e-15);
+  const Attributes a(mesh);
+  ASSERT_TRUE(a.normals);
+  for (const auto h : mesh.halfedges())
+    if (!mesh.is_border(h)) {
+      EXPECT_NEAR((*a.normals)[h].x(), 0, 1e-15);
+      EXPECT_NEAR((*a.normals)[h].y(), 0, 1e-15);
+      EXPECT_NEAR((*a.normals)[h].z(), 1, 1e-15);
+    }
+  fs::remove_all(folder);
+}
+
+// Any bytes: the reader and the writer never decode an image.
+const std::string kImageBytes = std::string("\x89PNG\r\n\x1a\n", 8) + "not decoded";
+
+TEST_F(Cli, SimplifyPassesAGlbsMaterialsAndImagesThrough) {
+  // A textured 6 x 6 grid written by the apps, then given an embedded and an external image.
+  Mesh grid = test_meshes::flat_grid(6);
+  test_meshes::paint_corners(
+      grid,
+      [](Mesh::Face_index, const apps::Point& p) {
+        return std::array<double, 2>{p.x() / 6, p.y() / 6};
+      },
+      false);
+  const Attributes painted = Attributes::add(grid, {false, false, false, true});
+  for (const auto f : grid.faces()) (*painted.materials)[f] = 0;
+  const fs::path plain = file("plain.glb");
+  apps::write_mesh_atomically(grid, plain.string(), {{}, {"skin"}, nullptr});
+  tinygltf::Model model;
+  std::string error, warning;
+  ASSERT_TRUE(tinygltf::TinyGLTF().LoadBinaryFromFile(&model, &error, &warning, plain.string()))
+      << error;
+  std::vector<unsigned char>& data = model.buffers[0].data;
+  tinygltf::BufferView view;
+  view.buffer = 0;
+  view.byteOffset = data.size();
+  view.byteLength = kImageBytes.size();
+  data.insert(data.end(), kImageBytes.begin(), kImageBytes.end());
+  model.bufferViews.push_back(view);
+  model.images.resize(2);
+  model.images[0].bufferView = int(model.bufferViews.size() - 1);
+  model.images[0].mimeType = "image/png";
+  model.images[1].uri = "tex/skin.png";
+  model.textures.resize(2);
+  model.textures[0].source = 0;
+  model.textures[1].source = 1;
+  model.materials[0].pbrMetallicRoughness.baseColorTexture.index = 0;
+  model.materials[0].emissiveTexture.index = 1;
+  const fs::path in = file("in.glb");
+  {
+    std::ofstream out(in, std::ios::binary);
+    tinygltf::TinyGLTF().WriteGltfSceneToStream(&model, out, false, true);
+  }
+
+  fs::create_directories(file("out"));
+  const fs::path out = file("out") / "out.glb";
+  const Command_result r =
+      run("simplify", in.string() + " " + out.string() + " 0.5 --policy gh --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"attributes\": \"carried\""), std::string::npos) << r.out;
+  const apps::Gltf_soup read = apps::read_gltf(out.string(), true);
+  EXPECT_LE(read.soup.polygons.size(), 36u);
+  ASSERT_EQ(read.looks->images.size(), 2u);
+  EXPECT_EQ(std::string(read.looks->images[0].image.begin(), read.looks->images[0].image.end()),
+            kImageBytes);
+  EXPECT_EQ(read.looks->images[0].mimeType, "image/png");
+  EXPECT_TRUE(read.looks->images[0].uri.empty());  // still in the file
+  EXPECT_EQ(read.looks->images[1].uri, file("tex/skin.png").string());
+  ASSERT_EQ(read.looks->materials.size(), 1u);
+  EXPECT_EQ(read.looks->materials[0].name, "skin");
+  EXPECT_EQ(read.looks->materials[0].pbrMetallicRoughness.baseColorTexture.index, 0);
+  EXPECT_EQ(read.looks->materials[0].emissiveTexture.index, 1);
+  EXPECT_EQ(read.looks->textures.size(), 2u);
+  EXPECT_EQ(read.soup.corners.polygon_materials,
+            std::vector<std::uint32_t>(read.soup.polygons.size(), 0));
+  // The file names the image by its path from its own folder.
+  EXPECT_NE(read_text(out).find("\"uri\":\"../tex/skin.png\""), std::string::npos);
+}
+
+TEST_F(Cli, SimplifyWritesATexturedObjAsGlb) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const std::string spot = test_meshes::data_file("spot.obj");
+  const fs::path out = file("spot.glb");
+  const Command_result r = run("simplify", spot + " " + out.string() + " 0.1 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"attributes\": \"carried\""), std::string::npos) << r.out;
+  apps::Read_report spot_report, report;
+  const Mesh original =
+      apps::read_triangle_mesh(spot, &spot_report, apps::Corner_attribute_reading::keep);
+  const Mesh simplified =
+      apps::read_triangle_mesh(out.string(), &report, apps::Corner_attribute_reading::keep);
+  EXPECT_EQ(double(simplified.number_of_faces()), json_number(r.out, "output_faces")) << r.out;
+  EXPECT_LE(json_number(r.out, "target_gap_faces"), 0) << r.out;
+  EXPECT_LT(simplified.number_of_faces(), original.number_of_faces() / 9);
+  EXPECT_EQ(report.materials.names, spot_report.materials.names);
+  const Attributes a(simplified);
+  ASSERT_TRUE(a.uvs.has_value());
+  for (const auto h : simplified.halfedges())
+    if (!simplified.is_border(h)) {
+      EXPECT_TRUE(std::isfinite((*a.uvs)[h][0]));
+    }
+  // The seams are where they were: one loop, as in spot.
+  const Command_result compared =
+      run("mesh_error", spot + " " + out.string() + " --attributes --json --samples 2000");
+  ASSERT_EQ(compared.exit_code, 0) << compared.err;
+  EXPECT_EQ(json_number(compared.out, "seam_loops_b"), 1) << compared.out;
+}
+
+TEST_F(Cli, SimplifyCarriesPlyColoursIntoAGltf) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const fs::path out = file("spot.gltf");
+  const Command_result r = run(
+      "simplify", test_meshes::data_file("spot_colors.ply") + " " + out.string() + " 0.1 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"attributes\": \"carried\""), std::string::npos) << r.out;
+  EXPECT_NE(read_text(out).find("\"COLOR_0\""), std::string::npos);
+  const Mesh simplified =
+      apps::read_triangle_mesh(out.string(), nullptr, apps::Corner_attribute_reading::keep);
+  const Attributes a(simplified);
+  ASSERT_TRUE(a.colors.has_value());
+  for (const auto h : simplified.halfedges()) {
+    if (simplified.is_border(h)) continue;
+    for (double c : (*a.colors)[h]) {
+      EXPECT_GE(c, 0);
+      EXPECT_LE(c, 1);
+    }
+  }
+}
+
+TEST_F(Cli, BadGltfIsOneBadInputLineAndNoOutput) {
+  const fs::path out = file("out.glb");
+  const auto one_triangle = [](std::vector<float> positions, std::vector<std::uint32_t> indices) {
+    Gltf_builder b;
+    const int p = b.accessor(positions, kFloat, TINYGLTF_TYPE_VEC3);
+    const int i = b.accessor(indices, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR);
+    b.place({triangles(p, i, -1, -1)}, {});
+    return b;
+  };
+  const float nan = std::nanf("");
+  one_triangle({0, 0, 0, 1, 0, 0, 0, nan, 0}, {0, 1, 2}).write(file("nan.glb"));
+  one_triangle({0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 1, 3}).write(file("index.glb"));
+  Gltf_builder raw_uvs = two_primitive_square();
+  raw_uvs.model.accessors[4].normalized = false;  // the second primitive's u16 coordinates
+  raw_uvs.write(file("raw_uvs.glb"));
+  two_primitive_square().write(file("whole.glb"));
+  const std::string whole = read_text(file("whole.glb"));
+  write("truncated.glb", whole.substr(0, whole.size() / 2));
+  write("malformed.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [");
+  write("missing_buffer.gltf",
+        "{\"asset\": {\"version\": \"2.0\"}, \"buffers\": [{\"uri\": \"gone.bin\", "
+        "\"byteLength\": 36}]}");
+  const std::map<std::string, std::string> causes = {
+      {"nan.glb", "mesh 0 primitive 0: the position of vertex 2 is not finite"},
+      {"index.glb", "mesh 0 primitive 0: index 3 is out of range (3 vertices)"},
+      {"raw_uvs.glb",
+       "mesh 0 primitive 1 TEXCOORD_0 (accessor 4): integer values must be normalized"},
+      {"truncated.glb", "cannot parse: "},
+      {"malformed.gltf", "cannot parse: "},
+      {"missing_buffer.gltf", "cannot parse: "}};
+  for (const auto& [name, cause] : causes) {
+    SCOPED_TRACE(name);
+    expect_failure(file(name).string() + " " + out.string() + " 0.5", apps::exit_bad_input,
+                   file(name), out);
+    EXPECT_EQ(read_text(file("stderr")).find("simplify: " + file(name).string() + ": " + cause), 0u)
+        << read_text(file("stderr"));
+  }
 }
 
 }  // namespace corner_attributes

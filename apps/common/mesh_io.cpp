@@ -4,6 +4,7 @@
 #include "atomic_write.h"
 #include "clean_triangle_soup.h"
 #include "declared_counts.h"
+#include "gltf_io.h"
 #include "obj_writer.h"
 #include "ply_writer.h"
 #include "polygon_crossing.h"
@@ -61,7 +62,7 @@ void check_readable_file(const std::string& path) {
   if (probe.peek() == std::ifstream::traits_type::eof()) fail_input(path, "empty file");
   if (!has_supported_mesh_extension(path))
     fail_input(path, "unsupported format '" + lower_extension(path) +
-                         "' (supported: .off, .obj, .ply, .stl)");
+                         "' (supported: .off, .obj, .ply, .stl, .gltf, .glb)");
 }
 
 // The whole file, read at once.
@@ -255,15 +256,31 @@ Mesh repaired_triangle_mesh(const std::string& path, std::vector<Point>& points,
   return mesh;
 }
 
+bool is_gltf(const std::string& extension) { return extension == ".gltf" || extension == ".glb"; }
+
+// The soup of a file of any format but STL, and its glTF looks when it is one.
+Polygon_soup read_soup(const std::string& path, const std::string& extension,
+                       std::shared_ptr<const tinygltf::Model>& gltf_looks) {
+  if (is_gltf(extension)) {
+    Gltf_soup read = read_gltf(path, extension == ".glb");
+    gltf_looks = std::move(read.looks);
+    return std::move(read.soup);
+  }
+  const std::string bytes = file_bytes(path);
+  return extension == ".obj"   ? parse_obj(path, bytes)
+         : extension == ".off" ? parse_off(path, bytes)
+                               : parse_ply(path, bytes);
+}
+
 }  // namespace
 
 bool writes_corner_attributes(const std::string& path) {
   const std::string extension = lower_extension(path);
-  return extension == ".obj" || extension == ".ply";
+  return extension == ".obj" || extension == ".ply" || is_gltf(extension);
 }
 
 bool has_supported_mesh_extension(const std::string& path) {
-  static const char* const kExtensions[] = {".off", ".obj", ".ply", ".stl"};
+  static const char* const kExtensions[] = {".off", ".obj", ".ply", ".stl", ".gltf", ".glb"};
   const std::string ext = lower_extension(path);
   return std::any_of(std::begin(kExtensions), std::end(kExtensions),
                      [&](const char* known) { return ext == known; });
@@ -275,10 +292,8 @@ Mesh read_triangle_mesh(const std::string& path, Read_report* report,
   check_declared_counts(path);
   const std::string extension = lower_extension(path);
   if (extension != ".stl") {
-    const std::string bytes = file_bytes(path);
-    Polygon_soup soup = extension == ".obj"   ? parse_obj(path, bytes)
-                        : extension == ".off" ? parse_off(path, bytes)
-                                              : parse_ply(path, bytes);
+    std::shared_ptr<const tinygltf::Model> gltf_looks;
+    Polygon_soup soup = read_soup(path, extension, gltf_looks);
     if (attributes == Corner_attribute_reading::drop)
       return triangle_mesh_from_soup(path, soup.points, soup.polygons, report);
     const Corner_tables& tables = soup.corners;
@@ -291,6 +306,7 @@ Mesh read_triangle_mesh(const std::string& path, Read_report* report,
       for (const std::string& library : soup.corners.material_libraries)
         report->materials.libraries.push_back((folder / library).lexically_normal().string());
       report->materials.names = soup.corners.material_names;
+      report->materials.gltf = std::move(gltf_looks);
     }
     return mesh;
   }
@@ -331,7 +347,7 @@ Mesh triangle_mesh_from_soup(const std::string& path, std::vector<Point>& points
 void check_output_path(const std::string& input, const std::string& output, bool force) {
   if (!has_supported_mesh_extension(output))
     throw App_error(exit_usage, output + ": unsupported output format '" + lower_extension(output) +
-                                    "' (use .off, .obj, .ply or .stl)");
+                                    "' (use .off, .obj, .ply, .stl, .gltf or .glb)");
   std::error_code ec;
   if (!force && fs::exists(output, ec) && fs::equivalent(input, output, ec))
     throw App_error(exit_usage, output + ": refusing to overwrite the input (use --force)");
@@ -348,8 +364,12 @@ void write_mesh_atomically(const Mesh& mesh, const std::string& path,
       return bool(file.flush());
     });
   };
+  const fs::path folder = fs::absolute(path).parent_path();
+  if (is_gltf(extension)) {
+    write_bytes(gltf_bytes(mesh, extension == ".glb", materials, folder.string()));
+    return;
+  }
   if (extension == ".obj" && Attributes(mesh).any()) {
-    const fs::path folder = fs::absolute(path).parent_path();
     std::vector<std::string> libraries;
     for (const std::string& library : materials.libraries)
       libraries.push_back(fs::path(library).lexically_relative(folder).string());

@@ -1,4 +1,4 @@
-// Reading and writing meshes for every app: OBJ, OFF, PLY and STL, polygon soups repaired,
+// Reading and writing meshes for every app: OBJ, OFF, PLY, STL and glTF, polygon soups repaired,
 // polygons triangulated, and atomic writes that never leave a partial file or touch the input.
 #ifndef CGAL_POLICIES_APPS_MESH_IO_H
 #define CGAL_POLICIES_APPS_MESH_IO_H
@@ -7,16 +7,23 @@
 #include "soup_readers.h"
 
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
+namespace tinygltf {
+class Model;
+}
+
 namespace apps {
 
-// What the faces of a mesh read from an OBJ file refer to outside it: the material libraries
-// (paths resolved against the folder of the file read) and the material names that the face
-// material map (cgal_policies::Corner_attributes) indexes.
+// What the faces of a mesh read from an OBJ or glTF file refer to outside it: the material
+// libraries (paths resolved against the folder of the file read), the material names that the
+// face material map (cgal_policies::Corner_attributes) indexes, and from a glTF file its
+// materials themselves, with their textures and images (gltf_io.h), for a glTF output to keep.
 struct Material_references {
   std::vector<std::string> libraries, names;
+  std::shared_ptr<const tinygltf::Model> gltf;
 };
 
 struct Read_report {
@@ -26,14 +33,14 @@ struct Read_report {
 
 // Whether the reader puts a file's texture coordinates, normals, colours and materials on the mesh
 // (cgal_policies::Corner_attributes), or reads the surface alone. OBJ files carry all four
-// (colours per point), PLY files per-vertex normals, texture coordinates and colours; the others
-// none.
+// (colours per point), PLY files per-vertex normals, texture coordinates and colours, glTF files
+// all four per vertex; the others none.
 enum class Corner_attribute_reading { drop, keep };
 
 bool has_supported_mesh_extension(const std::string& path);
 
 // Whether write_mesh_atomically writes a mesh's corner attributes to a file of this name (OBJ,
-// PLY).
+// PLY, glTF).
 bool writes_corner_attributes(const std::string& path);
 
 // Reads a triangle mesh; throws App_error(exit_bad_input, "<path>: <cause>") when it cannot.
@@ -58,6 +65,8 @@ void check_output_path(const std::string& input, const std::string& output, bool
 // mesh's corner attributes too (obj_text): its texture coordinates and normals per corner, colours
 // per point, and `materials` (mtllib paths made relative to the file's folder, a usemtl line
 // wherever the material changes). A PLY file gets a vertex per wedge with its values (ply_bytes).
+// A glTF file (.gltf, .glb) is always written by gltf_bytes (gltf_io.h), with whatever the mesh
+// carries.
 void write_mesh_atomically(const Mesh& mesh, const std::string& path,
                            const Material_references& materials = {});
 
