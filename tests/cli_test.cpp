@@ -1791,6 +1791,9 @@ TEST_F(Cli, BadGltfIsOneBadInputLineAndNoOutput) {
   Gltf_builder raw_uvs = two_primitive_square();
   raw_uvs.model.accessors[4].normalized = false;  // the second primitive's u16 coordinates
   raw_uvs.write(file("raw_uvs.glb"));
+  Gltf_builder cycle = two_primitive_square();
+  cycle.model.nodes[0].children = {0};  // its own child
+  cycle.write(file("cycle.glb"));
   two_primitive_square().write(file("whole.glb"));
   const std::string whole = read_text(file("whole.glb"));
   write("truncated.glb", whole.substr(0, whole.size() / 2));
@@ -1803,6 +1806,7 @@ TEST_F(Cli, BadGltfIsOneBadInputLineAndNoOutput) {
       {"index.glb", "mesh 0 primitive 0: index 3 is out of range (3 vertices)"},
       {"raw_uvs.glb",
        "mesh 0 primitive 1 TEXCOORD_0 (accessor 4): integer values must be normalized"},
+      {"cycle.glb", "the node hierarchy has a cycle"},
       {"truncated.glb", "cannot parse: "},
       {"malformed.gltf", "cannot parse: "},
       {"missing_buffer.gltf", "cannot parse: "}};

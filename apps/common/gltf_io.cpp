@@ -87,15 +87,24 @@ struct Placed_mesh {
   Matrix world;
 };
 
+// Deeper hierarchies are refused rather than risking the stack on a forged file.
+constexpr std::size_t kMaxNodeDepth = 1000;
+
+// `on_path` marks the node's ancestors, so that a cycle is found at once.
 void place_node(const std::string& path, const tinygltf::Model& model, int node,
-                const Matrix& parent, std::size_t depth, std::vector<Placed_mesh>& placed) {
+                const Matrix& parent, std::vector<char>& on_path, std::size_t depth,
+                std::vector<Placed_mesh>& placed) {
   if (node < 0 || std::size_t(node) >= model.nodes.size())
     fail(path, "node " + std::to_string(node) + " does not exist");
-  if (depth > model.nodes.size()) fail(path, "the node hierarchy has a cycle");
+  if (on_path[std::size_t(node)]) fail(path, "the node hierarchy has a cycle");
+  if (depth > kMaxNodeDepth)
+    fail(path, "the node hierarchy is deeper than " + std::to_string(kMaxNodeDepth));
   const tinygltf::Node& n = model.nodes[std::size_t(node)];
   const Matrix world = product(parent, local_matrix(n));
   if (n.mesh >= 0) placed.push_back({n.mesh, world});
-  for (int child : n.children) place_node(path, model, child, world, depth + 1, placed);
+  on_path[std::size_t(node)] = 1;
+  for (int child : n.children) place_node(path, model, child, world, on_path, depth + 1, placed);
+  on_path[std::size_t(node)] = 0;
 }
 
 std::vector<Placed_mesh> placed_meshes(const std::string& path, const tinygltf::Model& model) {
@@ -107,8 +116,9 @@ std::vector<Placed_mesh> placed_meshes(const std::string& path, const tinygltf::
   const int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
   if (std::size_t(scene) >= model.scenes.size())
     fail(path, "scene " + std::to_string(scene) + " does not exist");
+  std::vector<char> on_path(model.nodes.size(), 0);
   for (int node : model.scenes[std::size_t(scene)].nodes)
-    place_node(path, model, node, kIdentity, 0, placed);
+    place_node(path, model, node, kIdentity, on_path, 0, placed);
   return placed;
 }
 
