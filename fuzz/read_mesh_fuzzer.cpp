@@ -1,6 +1,6 @@
 // Fuzzes one reader (the extension is FUZZ_EXTENSION, one target per format): the bytes become a
 // file that apps::read_triangle_mesh reads as simplify would when it keeps corner attributes
-// (texture coordinates, normals and materials of OBJ; normals and texture coordinates of PLY). It
+// (texture coordinates, normals, colours and materials of OBJ, PLY and glTF). It
 // must give a valid triangle mesh or App_error(exit_bad_input) with one line; anything else (a
 // crash, another exception, a sanitizer report, an allocation beyond libFuzzer's limit, a hang) is
 // a finding.

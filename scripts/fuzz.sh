@@ -34,6 +34,7 @@ fi
 
 dictionary() {
   case "$1" in
+    read_glb | read_gltf) echo "fuzz/gltf.dict" ;;
     read_*) echo "fuzz/${1#read_}.dict" ;;
     command_line) echo "fuzz/command_line.dict" ;;
   esac
