@@ -10,6 +10,7 @@
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -93,7 +94,8 @@ class Corner_attributes {
   }
 
   // The values at barycentric weights w of a triangle whose corners hold `corner`: texture
-  // coordinates and colours blend linearly, normals blend and are made unit again.
+  // coordinates and colours blend linearly, normals blend and are made unit again. Colours are
+  // clamped to [0, 1], which rounding can overstep (the fuzzer found 1 + 2^-52).
   static Values blend(const std::array<Values, 3>& corner, const std::array<double, 3>& w) {
     Values v{{0, 0}, Vector(0, 0, 0), {0, 0, 0, 0}};
     for (int k = 0; k < 3; ++k) {
@@ -103,6 +105,7 @@ class Corner_attributes {
     }
     const double length = std::sqrt(v.normal.squared_length());
     if (length > 0) v.normal = v.normal / length;
+    for (double& channel : v.color) channel = std::clamp(channel, 0.0, 1.0);  // NaN stays NaN
     return v;
   }
 
