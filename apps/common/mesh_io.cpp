@@ -131,9 +131,16 @@ std::string unused_vertices_removed(std::size_t count) {
 
 using Attributes = cgal_policies::Corner_attributes<Point>;
 
+// The maps a soup's corner tables fill.
+Attributes::Kinds kinds_of(const Corner_tables& corners) {
+  return {!corners.polygon_uvs.empty(), !corners.polygon_normals.empty(),
+          !corners.polygon_colors.empty(), !corners.polygon_materials.empty()};
+}
+
 bool has_corner_attributes(const Corner_tables* corners) {
-  return corners && (!corners->polygon_uvs.empty() || !corners->polygon_normals.empty() ||
-                     !corners->polygon_colors.empty() || !corners->polygon_materials.empty());
+  if (!corners) return false;
+  const Attributes::Kinds kinds = kinds_of(*corners);
+  return kinds.uvs || kinds.normals || kinds.colors || kinds.materials;
 }
 
 // Puts the attributes of `corners` on the mesh built from `polygons`, whose face i is polygon i
@@ -141,24 +148,22 @@ bool has_corner_attributes(const Corner_tables* corners) {
 void set_corner_attributes(Mesh& mesh, const std::vector<Polygon>& polygons,
                            const Corner_tables& corners,
                            const std::vector<Mesh::Vertex_index>& vertex_of_point) {
-  Attributes::Kinds kinds;
-  kinds.uvs = !corners.polygon_uvs.empty();
-  kinds.normals = !corners.polygon_normals.empty();
-  kinds.colors = !corners.polygon_colors.empty();
-  kinds.materials = !corners.polygon_materials.empty();
-  const Attributes attributes = Attributes::add(mesh, kinds);
+  const Attributes attributes = Attributes::add(mesh, kinds_of(corners));
   for (std::size_t f = 0; f < polygons.size(); ++f) {
     const Mesh::Face_index face(static_cast<Mesh::size_type>(f));
     if (attributes.materials) (*attributes.materials)[face] = corners.polygon_materials[f];
     for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(face), mesh)) {
       std::size_t k = 0;
       while (vertex_of_point[polygons[f][k]] != mesh.target(h)) ++k;
-      if (attributes.uvs && corners.polygon_uvs[f][k] != Corner_tables::kNoEntry)
-        (*attributes.uvs)[h] = corners.uvs[corners.polygon_uvs[f][k]];
-      if (attributes.normals && corners.polygon_normals[f][k] != Corner_tables::kNoEntry)
-        (*attributes.normals)[h] = corners.normals[corners.polygon_normals[f][k]];
-      if (attributes.colors && corners.polygon_colors[f][k] != Corner_tables::kNoEntry)
-        (*attributes.colors)[h] = corners.colors[corners.polygon_colors[f][k]];
+      // The corner takes the table entry its polygon names, if the mesh has the map and it names
+      // one.
+      const auto copy = [&](const auto& map, const auto& polygon_entries, const auto& table) {
+        if (map && polygon_entries[f][k] != Corner_tables::kNoEntry)
+          (*map)[h] = table[polygon_entries[f][k]];
+      };
+      copy(attributes.uvs, corners.polygon_uvs, corners.uvs);
+      copy(attributes.normals, corners.polygon_normals, corners.normals);
+      copy(attributes.colors, corners.polygon_colors, corners.colors);
     }
   }
 }

@@ -24,8 +24,8 @@ std::array<double, 3> Texture_image::color_at(double u, double v) const {
   // Texel (i, j) has its centre at ((i + 0.5) / width, 1 - (j + 0.5) / height).
   const double x = std::clamp(u * width - 0.5, 0.0, double(width - 1)),
                y = std::clamp((1 - v) * height - 0.5, 0.0, double(height - 1));
-  const int i = std::min(int(x), width - 2 < 0 ? 0 : width - 2),
-            j = std::min(int(y), height - 2 < 0 ? 0 : height - 2);
+  const int i = std::min(int(x), std::max(width - 2, 0)),
+            j = std::min(int(y), std::max(height - 2, 0));
   const int i1 = std::min(i + 1, width - 1), j1 = std::min(j + 1, height - 1);
   const double fx = x - i, fy = y - j;
   const auto texel = [&](int column, int row, int channel) {
