@@ -10,6 +10,7 @@ struct Two_sided_fit_options {
   int rounds = 4;                    // fit rounds, each followed by a flip round
   bool flips = true;                 // flip edges between the fits
   double trust_fraction = 0.3;       // a vertex moves at most this much of its mean edge per round
+  double tangent_weight = 0.001;     // a match's distance across its direction counts this much
   bool target_mean = false;          // reweight toward the mean (L1) distance rather than the RMS
   double max_normal_angle_deg = 90;  // no face normal turns more than this during the pass
   std::size_t min_input_samples = 100000;  // the input is sampled at least this densely

@@ -4,23 +4,26 @@
 // (docs/fitting.md). Each round matches samples of the input to their nearest output points (a
 // walk from the face they were on last round; an AABB tree of the output at first and when a walk
 // loses its way) and samples of the output to their nearest input points (an AABB tree of the
-// input, built once), then solves for every vertex at once (Eigen's sparse Cholesky, three right-
-// hand sides). Reweighting by the distances aims the fit at the mean (L1) distance. A vertex moves
-// at most a fraction of its mean edge length per round; a flip round then flips each interior edge
-// whose two faces' two-sided error drops, never making an edge twice, a vertex of degree < 4 one of
-// degree < 3, or a fold.
+// input, built once), then solves for every vertex at once (Eigen's sparse Cholesky), each match
+// measured as the distance to its tangent plane, so vertices slide along the surface. Reweighting
+// by the distances aims the fit at the mean (L1) distance. A vertex moves at most a fraction of its
+// mean edge length per round; a flip round then flips each interior edge whose two faces' two-sided
+// error drops, never making an edge twice, a vertex of degree < 4 one of degree < 3, or a fold.
 // Guarantees: no face normal turns by more than max_normal_angle_deg from its direction before the
 // pass (a flipped edge's faces: from their old normals' mean), no face becomes degenerate, no
 // moved or flipped face crosses another face (exact predicates; intersections the mesh had before
-// stay, no new ones appear), border vertices stay border vertices and move onto the input's border
-// curve, the combinatorics stay manifold. With a tolerance (bounded mode), every move and every
-// flip is certified against the input in both directions as Hausdorff_bounded_policies certifies
-// collapses: an output within the tolerance stays within it.
+// stay, no new ones appear), border vertices stay border vertices and slide along the input's
+// border curve (one the simplification left off the curve never moves farther from it), the
+// combinatorics stay manifold. With a tolerance (bounded mode), every move and every flip is
+// certified against the input in both directions as Hausdorff_bounded_policies certifies collapses:
+// an output within the tolerance stays within it.
 // Parameters (Two_sided_fit_options):
 //   rounds                fit rounds, >= 0 (default 4)
 //   flips                 a flip round after each fit round (default true)
 //   trust_fraction        largest move per round, a fraction of the mean edge length around the
 //                         vertex, > 0 (default 0.3)
+//   tangent_weight        in [0, 1], how much a match's distance across its direction counts: 1 is
+//                         the plain distance to the matched point (default 0.001)
 //   target_mean           reweight toward the mean distance rather than the RMS (default false)
 //   max_normal_angle_deg  in (0, 180] (default 90)
 //   min_input_samples     the input is sampled at least this densely, >= 1 (default 100000)
@@ -73,6 +76,7 @@ constexpr int kFitOutputLevel = 3;  // samples per output face: its square
 constexpr int kFitFlipLevel = 2;    // the same when a flip is weighed
 
 constexpr std::size_t kFitWalkSteps = 32;
+constexpr int kFitUndoneRounds = 2;  // undone rounds in a row that end the pass
 constexpr std::uint32_t kFitNoFace = 0xffffffffu;
 }  // namespace internal
 
@@ -100,6 +104,7 @@ class Two_sided_fitter {
         m_border(input, get(CGAL::vertex_point, input)) {
     CGAL_precondition(options.rounds >= 0);
     CGAL_precondition(options.trust_fraction > 0);
+    CGAL_precondition(options.tangent_weight >= 0 && options.tangent_weight <= 1);
     CGAL_precondition(options.max_normal_angle_deg > 0 && options.max_normal_angle_deg <= 180);
     CGAL_precondition(options.tolerance >= 0);
     CGAL_precondition(options.min_input_samples >= 1);
@@ -111,19 +116,26 @@ class Two_sided_fitter {
     sample_input(num_faces(output));
     if (m_samples.empty()) return report;
     Pass pass(output, *this);
-    // Each round must lower the two-sided mean distance of the samples; one that does not is
-    // undone and ends the pass.
+    // Each round must lower the two-sided mean distance of the samples. One that does not is
+    // undone, and the next round moves at most half as far; the second undone round in a row ends
+    // the pass.
     double error = pass.match();
+    double reach = 1;
+    int undone_in_a_row = 0;
     for (int round = 0; round < m_options.rounds; ++round) {
       Two_sided_fit_report step;
       pass.begin_round();
-      if (!pass.fit_round(step, error)) break;
+      if (!pass.fit_round(step, error, reach)) break;
       if (m_options.flips) pass.flip_round(step);
       const double now = pass.match();
       if (!(now < error)) {
         pass.undo_round();
-        break;
+        if (++undone_in_a_row == internal::kFitUndoneRounds) break;
+        reach *= 0.5;
+        error = pass.match();
+        continue;
       }
+      undone_in_a_row = 0;
       error = now;
       ++report.rounds;
       report.moves += step.moves;
@@ -139,6 +151,7 @@ class Two_sided_fitter {
   struct Input_sample {
     Vector3 point;
     double weight;
+    std::uint32_t triangle;  // the input triangle it lies on (its index in m_input)
   };
 
   // About max(min_input_samples, min(input faces, kFitSamplesPerFace * output faces)) samples: a
@@ -157,13 +170,15 @@ class Two_sided_fitter {
     const std::size_t stride = (std::max)(std::size_t(1), face_count / wanted);
     const std::vector<Vector3> grid = internal::barycentric_grid(level);
     double total = 0;
-    std::size_t index = 0;
+    std::uint32_t index = 0;
     for (face_descriptor f : faces(*m_input_mesh)) {
-      if (index++ % stride != 0) continue;
+      const std::uint32_t triangle = index++;
+      if (triangle % stride != 0) continue;
       const internal::Triangle_corners t = internal::face_corners(f, *m_input_mesh, vpm);
       const double area = 0.5 * internal::triangle_area_normal(t[0], t[1], t[2]).norm();
       for (const Vector3& b : grid)
-        m_samples.push_back({b[0] * t[0] + b[1] * t[1] + b[2] * t[2], area / double(grid.size())});
+        m_samples.push_back(
+            {b[0] * t[0] + b[1] * t[1] + b[2] * t[2], area / double(grid.size()), triangle});
       total += area;
     }
     if (!(total > 0)) m_samples.clear();
@@ -197,6 +212,13 @@ class Two_sided_fitter {
             m_options.tolerance, Hausdorff_bounded_options());
       refresh_faces();
       start_guards();
+      // A border vertex the simplification placed off the input's border curve is not snapped
+      // onto it: that made the border worse than where the policy put it (docs/fitting.md).
+      m_off_curve.assign(m_vertices.size(), false);
+      if (!fitter.m_border.empty())
+        for (std::uint32_t v = 0; v < m_vertices.size(); ++v)
+          m_off_curve[v] = CGAL::is_border(m_vertices[v], tm) &&
+                           fitter.m_border.distance(m_points[v]) > 1e-9 * fitter.m_input.diagonal();
     }
 
     // Matches both ways as the mesh is now; returns the two directions' mean distances, averaged.
@@ -229,14 +251,32 @@ class Two_sided_fitter {
     }
 
     // Solves for the points the last matches ask for and moves toward them; `scale` is the mean
-    // distance match() returned. False when the system could not be solved.
-    bool fit_round(Two_sided_fit_report& report, double scale) {
+    // distance match() returned, `reach` scales the trust region. False when the system could not
+    // be solved.
+    bool fit_round(Two_sided_fit_report& report, double scale, double reach) {
       const std::size_t n = m_vertices.size();
-      std::vector<Eigen::Matrix3d> blocks(m_faces.size(), Eigen::Matrix3d::Zero());
-      std::vector<Eigen::Matrix3d> sides(m_faces.size(), Eigen::Matrix3d::Zero());
+      using Block = Eigen::Matrix<double, 9, 9>;
+      using Side = Eigen::Matrix<double, 9, 1>;
+      std::vector<Block> blocks(m_faces.size(), Block::Zero());
+      std::vector<Side> sides(m_faces.size(), Side::Zero());
+      // A match's squared distance, measured along its direction in full and across it at
+      // tangent_weight: the distance to the tangent plane, which lets a vertex slide along the
+      // surface instead of being held to last round's nearest points.
       const auto add = [&](std::uint32_t f, const Vector3& b, double w, const Vector3& target) {
-        blocks[f] += w * b * b.transpose();
-        sides[f] += w * b * target.transpose();  // row k: corner k's share
+        const Face_corners& c = m_corners[f];
+        Vector3 along =
+            b[0] * m_points[c[0]] + b[1] * m_points[c[1]] + b[2] * m_points[c[2]] - target;
+        if (!(along.norm() > 0))
+          along = internal::triangle_area_normal(m_points[c[0]], m_points[c[1]], m_points[c[2]]);
+        along = internal::unit_or_zero(along);
+        const Eigen::Matrix3d metric =
+            w * (m_options.tangent_weight * Eigen::Matrix3d::Identity() +
+                 (1 - m_options.tangent_weight) * along * along.transpose());
+        const Vector3 pulled = metric * target;
+        for (int r = 0; r < 3; ++r) {
+          sides[f].segment<3>(3 * r) += b[r] * pulled;
+          for (int k = 0; k < 3; ++k) blocks[f].block<3, 3>(3 * r, 3 * k) += b[r] * b[k] * metric;
+        }
       };
       const auto weight = [&](double base, double distance) {
         return m_options.target_mean ? base / std::max(distance, 0.1 * scale) : base;
@@ -249,29 +289,35 @@ class Two_sided_fitter {
       for (const Matched_output_sample& o : m_output_matches)
         add(o.face, o.barycentric, weight(o.weight, o.distance), o.target);
       std::vector<Eigen::Triplet<double>> entries;
-      Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(Eigen::Index(n), 3);
+      Eigen::VectorXd rhs = Eigen::VectorXd::Zero(Eigen::Index(3 * n));
       double trace = 0;
       for (std::uint32_t f = 0; f < m_faces.size(); ++f)
         for (int r = 0; r < 3; ++r) {
-          for (int c = 0; c < 3; ++c)
-            entries.emplace_back(m_corners[f][r], m_corners[f][c], blocks[f](r, c));
-          rhs.row(m_corners[f][r]) += sides[f].row(r);
-          trace += blocks[f](r, r);
+          const Eigen::Index row = 3 * Eigen::Index(m_corners[f][r]);
+          for (int k = 0; k < 3; ++k) {
+            const Eigen::Index column = 3 * Eigen::Index(m_corners[f][k]);
+            for (int i = 0; i < 3; ++i)
+              for (int j = 0; j < 3; ++j)
+                entries.emplace_back(row + i, column + j, blocks[f](3 * r + i, 3 * k + j));
+          }
+          rhs.segment<3>(row) += sides[f].segment<3>(3 * r);
+          trace += blocks[f].block<3, 3>(3 * r, 3 * r).trace();
         }
       // A light pull toward where each vertex is keeps the system definite (a vertex no sample
-      // reaches stays).
-      const double pull = 1e-3 * trace / double(n);
-      for (std::uint32_t v = 0; v < n; ++v) {
-        entries.emplace_back(v, v, pull);
-        rhs.row(v) += pull * m_points[v].transpose();
-      }
-      Eigen::SparseMatrix<double> system{Eigen::Index(n), Eigen::Index(n)};
+      // reaches stays, and so does a vertex's slide along a flat tangent plane).
+      const double pull = 1e-3 * trace / double(3 * n);
+      for (std::uint32_t v = 0; v < n; ++v)
+        for (int i = 0; i < 3; ++i) {
+          entries.emplace_back(3 * v + i, 3 * v + i, pull);
+          rhs[3 * v + i] += pull * m_points[v][i];
+        }
+      Eigen::SparseMatrix<double> system{Eigen::Index(3 * n), Eigen::Index(3 * n)};
       system.setFromTriplets(entries.begin(), entries.end());
       Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(system);
       if (solver.info() != Eigen::Success) return false;
-      const Eigen::MatrixX3d solved = solver.solve(rhs);
+      const Eigen::VectorXd solved = solver.solve(rhs);
       if (solver.info() != Eigen::Success || !solved.allFinite()) return false;
-      move_vertices(solved, report);
+      move_vertices(solved, reach, report);
       return true;
     }
 
@@ -406,6 +452,12 @@ class Two_sided_fitter {
       std::vector<Matched_output_sample> matched;
       const double total_area = output_area();
       if (!(total_area > 0)) return matched;
+      // A face with no input triangle near it yet starts from one under an input sample matched to
+      // it, a few steps of a walk from its own samples.
+      for (std::size_t s = 0; s < m_sample_face.size(); ++s) {
+        std::size_t& hint = m_face_hint[m_sample_face[s]];
+        if (hint == internal::Reference_sample::kNoTriangle) hint = m_fitter->m_samples[s].triangle;
+      }
       for (std::uint32_t f = 0; f < m_faces.size(); ++f) {
         const internal::Indexed_triangle t = triangle(f);
         const double w = triangle_area(t) / (total_area * double(grid.size()));
@@ -431,7 +483,7 @@ class Two_sided_fitter {
       return area;
     }
 
-    void move_vertices(const Eigen::MatrixX3d& solved, Two_sided_fit_report& report) {
+    void move_vertices(const Eigen::VectorXd& solved, double reach, Two_sided_fit_report& report) {
       std::vector<double> edge_sum(m_vertices.size(), 0.0);
       std::vector<int> edge_count(m_vertices.size(), 0);
       for (const Face_corners& c : m_corners)
@@ -444,8 +496,8 @@ class Two_sided_fitter {
         }
       for (std::uint32_t v = 0; v < m_vertices.size(); ++v) {
         if (edge_count[v] == 0) continue;
-        Vector3 step = solved.row(v).transpose() - m_points[v];
-        const double limit = m_options.trust_fraction * edge_sum[v] / edge_count[v];
+        Vector3 step = solved.segment<3>(3 * Eigen::Index(v)) - m_points[v];
+        const double limit = reach * m_options.trust_fraction * edge_sum[v] / edge_count[v];
         if (step.norm() > limit) step *= limit / step.norm();
         if (!(step.norm() > 0)) continue;
         if (try_move(v, m_points[v] + step, limit) || try_move(v, m_points[v] + 0.5 * step, limit))
@@ -455,12 +507,17 @@ class Two_sided_fitter {
       }
     }
 
-    // Moves v to p (a border vertex: to the input's border curve nearest p) when the guards allow
-    // it and it stays within `limit` (a far border point may be another hole's).
+    // Moves v to p when the guards allow it and it stays within `limit`. A border vertex on the
+    // input's border curve goes to the point of the curve nearest p along its own stretch of it;
+    // one off the curve may move only where it is no farther from the curve.
     bool try_move(std::uint32_t v, Vector3 p, double limit) {
       const vertex_descriptor vd = m_vertices[v];
-      if (CGAL::is_border(vd, *m_tm) && !m_fitter->m_border.empty())
-        p = m_fitter->m_border.nearest(p);
+      if (CGAL::is_border(vd, *m_tm) && !m_fitter->m_border.empty()) {
+        if (!m_off_curve[v])
+          p = m_fitter->m_border.nearest_along(m_points[v], p, limit);
+        else if (m_fitter->m_border.distance(p) > m_fitter->m_border.distance(m_points[v]))
+          return false;
+      }
       if (p == m_points[v] || (p - m_points[v]).norm() > limit) return false;
       std::vector<std::uint32_t> star;
       std::vector<internal::Indexed_triangle> moved;
@@ -506,8 +563,10 @@ class Two_sided_fitter {
       return error;
     }
 
-    // The error of a triangle seen from itself: its samples and their nearest input points.
-    double output_error(const internal::Indexed_triangle& t, std::size_t hint) {
+    // The error of a triangle seen from itself: its samples and their nearest input points. It
+    // stops once the sum passes `budget`, so a flip that cannot pay off is dropped early.
+    double output_error(const internal::Indexed_triangle& t, std::size_t hint,
+                        double budget = std::numeric_limits<double>::infinity()) {
       static const std::vector<Vector3> grid = internal::barycentric_grid(internal::kFitFlipLevel);
       const double w = triangle_area(t) / (m_output_area * double(grid.size()));
       double error = 0;
@@ -516,6 +575,7 @@ class Two_sided_fitter {
             b[0] * t.points[0] + b[1] * t.points[1] + b[2] * t.points[2], hint);
         hint = near.triangle;
         error += w * penalty(near.distance * near.distance);
+        if (error > budget) break;
       }
       return error;
     }
@@ -543,14 +603,18 @@ class Two_sided_fitter {
       };
       const std::array<internal::Indexed_triangle, 2> before = {indexed(a, b, c), indexed(b, a, d)};
       const std::array<internal::Indexed_triangle, 2> after = {indexed(a, d, c), indexed(d, b, c)};
-      const double error_before =
-          pair_input_error(f0, f1, before) + m_output_error[f0] + m_output_error[f1];
-      const double error_after = pair_input_error(f0, f1, after) +
-                                 output_error(after[0], m_face_hint[f0]) +
-                                 output_error(after[1], m_face_hint[f1]);
       // Strictly lower, beyond rounding: a flip of a flat quad changes nothing.
       const double rounding = penalty(CGAL::square(1e-9 * m_fitter->m_input.diagonal()));
-      if (!(error_after < (1 - 1e-9) * error_before - rounding)) return;
+      const double budget = (1 - 1e-9) * (pair_input_error(f0, f1, before) + m_output_error[f0] +
+                                          m_output_error[f1]) -
+                            rounding;
+      const double input_after = pair_input_error(f0, f1, after);
+      if (!(input_after < budget)) return;
+      const double output_after0 = output_error(after[0], m_face_hint[f0], budget - input_after);
+      if (!(input_after + output_after0 < budget)) return;
+      const double output_after1 =
+          output_error(after[1], m_face_hint[f1], budget - input_after - output_after0);
+      if (!(input_after + output_after0 + output_after1 < budget)) return;
       const Vector3 reference =
           internal::unit_or_zero(m_guard->reference(f0) + m_guard->reference(f1));
       const std::vector<Vector3> references = {reference, reference};
@@ -574,8 +638,11 @@ class Two_sided_fitter {
           m_corners[f][k++] = get(m_vertex_index, v);
       }
       m_guard->apply(changed, {triangle(f0), triangle(f1)}, references);
-      for (const std::uint32_t f : changed)
-        m_output_error[f] = output_error(triangle(f), m_face_hint[f]);
+      // Euler::flip_edge decides which face becomes which triangle: the one with a is after[0].
+      const bool f0_has_a = std::find(m_corners[f0].begin(), m_corners[f0].end(),
+                                      after[0].vertices[0]) != m_corners[f0].end();
+      m_output_error[f0] = f0_has_a ? output_after0 : output_after1;
+      m_output_error[f1] = f0_has_a ? output_after1 : output_after0;
       // The input samples of the pair go to the nearer of its new faces.
       std::vector<std::uint32_t> pooled = m_face_samples[f0];
       pooled.insert(pooled.end(), m_face_samples[f1].begin(), m_face_samples[f1].end());
@@ -600,6 +667,7 @@ class Two_sided_fitter {
     std::vector<vertex_descriptor> m_vertices;
     std::vector<face_descriptor> m_faces;
     std::vector<Vector3> m_points;
+    std::vector<bool> m_off_curve;  // border vertices off the input's border curve
     std::vector<Face_corners> m_corners, m_neighbours;
     std::optional<internal::Fit_guard> m_guard;
     std::vector<std::uint32_t> m_sample_face;

@@ -2,6 +2,7 @@
 #include "test_meshes.h"
 
 #include <cgal_policies/Two_sided_fitter.h>
+#include <cgal_policies/internal/Border_curve.h>
 #include <cgal_policies/internal/Fit_guard.h>
 
 #include <gtest/gtest.h>
@@ -87,6 +88,33 @@ TEST(TwoSidedFitter, ACoarsePlaneLiftedOffItsPlaneComesBackToIt) {
       EXPECT_NEAR((std::min)({p.x(), 16 - p.x(), p.y(), 16 - p.y()}), 0.0, 1e-12) << p;
     } else {
       EXPECT_LT(std::abs(p.z()), 0.125) << p;  // at least half way back
+    }
+  }
+}
+
+TEST(TwoSidedFitter, ABorderVertexOffTheInputsBorderNeverMovesFartherFromIt) {
+  const Mesh input = flat_grid(16);
+  Mesh output = scaled(flat_grid(4), 4);
+  Mesh::Vertex_index off;  // the middle of the square's side y = 0, pushed out of the square
+  for (auto v : vertices(output)) {
+    const Point p = output.point(v);
+    if (p == Point(8, 0, 0)) {
+      off = v;
+      output.point(v) = Point(8, -0.5, 0);
+    }
+    if (!CGAL::is_border(v, output)) output.point(v) = Point(p.x(), p.y(), 0.25);
+  }
+  ASSERT_TRUE(off.is_valid());
+  const Two_sided_fit_report report = Two_sided_fitter<Mesh>(input, few_samples()).fit(output);
+  EXPECT_GE(report.rounds, 1);
+  for (auto v : vertices(output)) {
+    const Point& p = output.point(v);
+    if (v == off) {  // its distance to the side y = 0, which stays the nearest part of the border
+      EXPECT_TRUE(p.x() > 0 && p.x() < 16 && p.y() <= 0) << p;
+      EXPECT_LE(std::hypot(p.y(), p.z()), 0.5) << p;
+    } else if (CGAL::is_border(v, output)) {  // on the input's border curve, the square's sides
+      EXPECT_EQ(p.z(), 0.0) << p;
+      EXPECT_NEAR((std::min)({p.x(), 16 - p.x(), p.y(), 16 - p.y()}), 0.0, 1e-12) << p;
     }
   }
 }
@@ -197,6 +225,30 @@ TEST(FitGuard, RefusesAMoveThroughAnotherFace) {
   Indexed_triangle above = high;
   above.points[0] = {1, 1, 0.5};
   EXPECT_TRUE(guard.allows({1}, {above}, {guard.reference(1)}));
+}
+
+// Two unit squares 0.1 apart, side by side in z = 0: four border edges each.
+Mesh two_squares() {
+  return from_triangles({{0, 0, 0},
+                         {1, 0, 0},
+                         {1, 1, 0},
+                         {0, 1, 0},
+                         {1.1, 0, 0},
+                         {2.1, 0, 0},
+                         {2.1, 1, 0},
+                         {1.1, 1, 0}},
+                        {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}});
+}
+
+TEST(BorderCurve, APointSlidesAlongItsOwnBorderAndNeverJumpsToTheNextOne) {
+  const Mesh mesh = two_squares();
+  const cgal_policies::internal::Border_curve curve(mesh, get(CGAL::vertex_point, mesh));
+  // The other square's side is nearer the target; the point stays on its own side.
+  EXPECT_EQ(curve.nearest_along({1, 0.5, 0}, {1.09, 0.5, 0}, 0.3), Eigen::Vector3d(1, 0.5, 0));
+  EXPECT_NEAR(curve.distance({1.09, 0.5, 0}), 0.01, 1e-12);
+  // Within reach only its own edge: the corner of it; with more, along the next edge.
+  EXPECT_EQ(curve.nearest_along({0.5, 0, 0}, {0, 0.5, 0}, 0.3), Eigen::Vector3d(0, 0, 0));
+  EXPECT_EQ(curve.nearest_along({0.5, 0, 0}, {0, 0.5, 0}, 1.0), Eigen::Vector3d(0, 0.5, 0));
 }
 
 }  // namespace

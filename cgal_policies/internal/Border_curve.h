@@ -1,5 +1,6 @@
-// The border edges of a mesh in an AABB tree, so the fitting pass keeps border vertices on the
-// input's border curve (docs/fitting.md).
+// The border edges of a mesh as closed polylines with an AABB tree, so the fitting pass keeps a
+// border vertex on the input's border curve and lets it slide only along its own stretch of it
+// (docs/fitting.md).
 #ifndef CGAL_POLICIES_INTERNAL_BORDER_CURVE_H
 #define CGAL_POLICIES_INTERNAL_BORDER_CURVE_H
 
@@ -11,6 +12,9 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include <algorithm>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace cgal_policies {
@@ -25,26 +29,73 @@ class Border_curve {
  public:
   template <typename TriangleMesh, typename VertexPointMap>
   Border_curve(const TriangleMesh& tm, const VertexPointMap& vpm) {
-    for (auto h : halfedges(tm)) {
+    using Halfedge = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+    std::vector<std::pair<Halfedge, std::uint32_t>> index;
+    for (Halfedge h : halfedges(tm)) {
       if (!CGAL::is_border(h, tm)) continue;
-      const Eigen::Vector3d a = to_eigen(get(vpm, source(h, tm)));
-      const Eigen::Vector3d b = to_eigen(get(vpm, target(h, tm)));
+      index.emplace_back(h, std::uint32_t(m_ends.size()));
+      m_ends.push_back({to_eigen(get(vpm, source(h, tm))), to_eigen(get(vpm, target(h, tm)))});
+    }
+    if (m_ends.empty()) return;
+    std::sort(index.begin(), index.end());
+    const auto index_of = [&](Halfedge h) {
+      return std::lower_bound(index.begin(), index.end(), std::make_pair(h, std::uint32_t(0)))
+          ->second;
+    };
+    m_next.resize(m_ends.size());
+    m_previous.resize(m_ends.size());
+    for (const auto& [h, i] : index) {
+      const std::uint32_t j = index_of(next(h, tm));  // the border's next edge is a border edge
+      m_next[i] = j;
+      m_previous[j] = i;
+    }
+    for (const auto& [a, b] : m_ends)
       m_segments.emplace_back(Search_kernel::Point_3(a.x(), a.y(), a.z()),
                               Search_kernel::Point_3(b.x(), b.y(), b.z()));
-    }
-    if (m_segments.empty()) return;
     m_tree.rebuild(m_segments.begin(), m_segments.end());
     m_tree.accelerate_distance_queries();
   }
 
-  bool empty() const { return m_segments.empty(); }
+  bool empty() const { return m_ends.empty(); }
 
-  Eigen::Vector3d nearest(const Eigen::Vector3d& p) const {
+  double distance(const Eigen::Vector3d& p) const {
     const auto q = m_tree.closest_point(Search_kernel::Point_3(p.x(), p.y(), p.z()));
-    return {q.x(), q.y(), q.z()};
+    return (Eigen::Vector3d(q.x(), q.y(), q.z()) - p).norm();
+  }
+
+  // The point of the curve nearest `to` within arc length `reach` of the curve's point nearest
+  // `from`: a border vertex slides along its own stretch of border and never jumps to another
+  // hole, or across a thin gap to another part of the same border.
+  Eigen::Vector3d nearest_along(const Eigen::Vector3d& from, const Eigen::Vector3d& to,
+                                double reach) const {
+    const auto start =
+        m_tree.closest_point_and_primitive(Search_kernel::Point_3(from.x(), from.y(), from.z()));
+    const std::uint32_t first = std::uint32_t(start.second - m_segments.cbegin());
+    const Eigen::Vector3d on(start.first.x(), start.first.y(), start.first.z());
+    Eigen::Vector3d best = nearest_on(first, to);
+    const auto walk = [&](const std::vector<std::uint32_t>& step, double arc) {
+      for (std::uint32_t i = step[first]; arc < reach && i != first; i = step[i]) {
+        const Eigen::Vector3d q = nearest_on(i, to);
+        if ((q - to).squaredNorm() < (best - to).squaredNorm()) best = q;
+        arc += (m_ends[i].second - m_ends[i].first).norm();
+      }
+    };
+    walk(m_next, (m_ends[first].second - on).norm());
+    walk(m_previous, (on - m_ends[first].first).norm());
+    return best;
   }
 
  private:
+  Eigen::Vector3d nearest_on(std::uint32_t i, const Eigen::Vector3d& p) const {
+    const Eigen::Vector3d& a = m_ends[i].first;
+    const Eigen::Vector3d ab = m_ends[i].second - a;
+    const double length2 = ab.squaredNorm();
+    const double t = length2 > 0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+    return a + t * ab;
+  }
+
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> m_ends;  // source, target
+  std::vector<std::uint32_t> m_next, m_previous;  // the adjacent edges along the border
   Segments m_segments;
   Tree m_tree;
 };
