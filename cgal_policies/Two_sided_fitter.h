@@ -455,6 +455,7 @@ class Two_sided_fitter {
       // A face with no input triangle near it yet starts from one under an input sample matched to
       // it, a few steps of a walk from its own samples.
       for (std::size_t s = 0; s < m_sample_face.size(); ++s) {
+        if (m_sample_face[s] == internal::kFitNoFace) continue;
         std::size_t& hint = m_face_hint[m_sample_face[s]];
         if (hint == internal::Reference_sample::kNoTriangle) hint = m_fitter->m_samples[s].triangle;
       }
