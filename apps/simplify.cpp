@@ -8,7 +8,6 @@
 #include "common/app_main.h"
 #include "common/atomic_write.h"
 #include "common/fitting.h"
-#include "common/material_texture.h"
 #include "common/mesh_io.h"
 #include "common/mesh_measures.h"
 #include "common/peak_memory.h"
@@ -171,9 +170,7 @@ int run(int argc, char** argv) {
       std::cerr << "simplify: " << input << ": " << repair << '\n';
 #ifdef CGAL_POLICIES_WITH_VIEWER
   // Before any work: a texture the picture needs and cannot read is bad input.
-  if (snapshot && Attributes(mesh).uvs)
-    if (const std::optional<std::string> texture = diffuse_texture_file(read_report.materials))
-      snapshot->settings.texture = Texture_image::load(*texture);
+  if (snapshot) snapshot->settings.texture = texture_to_draw(mesh, read_report.materials);
 #endif
   const std::size_t input_faces = mesh.number_of_faces();
   const std::size_t input_vertices = mesh.number_of_vertices();

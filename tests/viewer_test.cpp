@@ -230,6 +230,28 @@ class Snapshot : public ::testing::Test {
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
   }
 
+  // A square facing the camera, textured with a 2 x 1 image, red then blue: square.obj, its
+  // square.mtl and red_blue.png.
+  void write_textured_square() const {
+    std::ofstream(path("square.obj"))
+        << "mtllib square.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+           "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl checker\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n";
+    std::ofstream(path("square.mtl")) << "newmtl checker\nmap_Kd -clamp on red_blue.png\n";
+    const unsigned char red_blue[] = {255, 0, 0, 0, 0, 255};
+    ASSERT_NE(stbi_write_png(path("red_blue.png").c_str(), 2, 1, 3, red_blue, 6), 0);
+  }
+  // A square whose left half is red and right half blue, stored per vertex in halves.ply (the
+  // middle points twice, once per colour: a colour seam once read).
+  void write_coloured_halves() const {
+    std::ofstream(path("halves.ply"))
+        << "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\n"
+           "property float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
+           "element face 4\nproperty list uchar int vertex_indices\nend_header\n"
+           "-1 -1 0 255 0 0\n0 -1 0 255 0 0\n0 1 0 255 0 0\n-1 1 0 255 0 0\n"
+           "0 -1 0 0 0 255\n1 -1 0 0 0 255\n1 1 0 0 0 255\n0 1 0 0 0 255\n"
+           "3 0 1 2\n3 0 2 3\n3 4 5 6\n3 4 6 7\n";
+  }
+
   std::filesystem::path m_folder;
 };
 
@@ -368,9 +390,6 @@ TEST_F(Snapshot, SimplifyWithABadSizeWritesNothing) {
   EXPECT_FALSE(std::filesystem::exists(path("t_out.off")));
 }
 
-// A square facing the camera, textured with a 2 x 1 image, red then blue: the picture shows red on
-// the left of each square and blue on its right. A texture the material names but that is missing
-// is bad input, and nothing is written.
 // In both panes of a 200 x 100 picture of a square: red at a quarter of its width, blue at three
 // quarters.
 void expect_red_left_and_blue_right(const Picture& picture) {
@@ -392,13 +411,10 @@ void expect_red_left_and_blue_right(const Picture& picture) {
   }
 }
 
+// The textured square: the picture shows red on the left of each square and blue on its right. A
+// texture the material names but that is missing is bad input, and nothing is written.
 TEST_F(Snapshot, ATexturedMeshIsDrawnWithItsTexture) {
-  std::ofstream(path("square.obj")) << "mtllib square.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
-                                       "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl checker\n"
-                                       "f 1/1 2/2 3/3\nf 1/1 3/3 4/4\n";
-  std::ofstream(path("square.mtl")) << "newmtl checker\nmap_Kd -clamp on red_blue.png\n";
-  const unsigned char red_blue[] = {255, 0, 0, 0, 0, 255};
-  ASSERT_NE(stbi_write_png(path("red_blue.png").c_str(), 2, 1, 3, red_blue, 6), 0);
+  write_textured_square();
   ASSERT_EQ(run_simplify(path("square.obj") + " " + path("out.obj") + " 1 --snapshot " +
                          path("square.png") + " --size 200x100"),
             0)
@@ -421,16 +437,9 @@ TEST_F(Snapshot, ATexturedMeshIsDrawnWithItsTexture) {
   EXPECT_EQ(run_simplify(path("square.obj") + " " + path("out.obj") + " 1"), 0) << output_text();
 }
 
-// A square whose left half is red and right half blue, stored per vertex in a PLY file (the middle
-// points twice, once per colour: a colour seam once read), is drawn with its colours in both panes.
+// The coloured halves are drawn with their colours in both panes.
 TEST_F(Snapshot, AColouredMeshIsDrawnWithItsColours) {
-  std::ofstream(path("halves.ply"))
-      << "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\n"
-         "property float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
-         "element face 4\nproperty list uchar int vertex_indices\nend_header\n"
-         "-1 -1 0 255 0 0\n0 -1 0 255 0 0\n0 1 0 255 0 0\n-1 1 0 255 0 0\n"
-         "0 -1 0 0 0 255\n1 -1 0 0 0 255\n1 1 0 0 0 255\n0 1 0 0 0 255\n"
-         "3 0 1 2\n3 0 2 3\n3 4 5 6\n3 4 6 7\n";
+  write_coloured_halves();
   ASSERT_EQ(run_simplify(path("halves.ply") + " " + path("out.ply") + " 1 --snapshot " +
                          path("halves.png") + " --size 200x100"),
             0)
@@ -439,6 +448,27 @@ TEST_F(Snapshot, AColouredMeshIsDrawnWithItsColours) {
   expect_red_left_and_blue_right(picture);
   std::filesystem::remove(path("out.ply"));
   std::filesystem::remove(path("halves.png"));
+}
+
+// mesh_viewer draws both squares with their texture and colours as simplify does, the original and
+// its simplification (which carries them); a missing texture is bad input there too.
+TEST_F(Snapshot, TheViewerDrawsTexturesAndColours) {
+  write_textured_square();
+  write_coloured_halves();
+  for (const std::string mesh : {"square.obj", "halves.ply"}) {
+    ASSERT_EQ(run_viewer(path(mesh) + " --policy lt --ratio 1 --size 200x100 --snapshot " +
+                         path("view.png")),
+              0)
+        << mesh << ": " << output_text();
+    expect_red_left_and_blue_right(load_png(path("view.png")));
+    std::filesystem::remove(path("view.png"));
+  }
+  std::filesystem::remove(path("red_blue.png"));
+  EXPECT_EQ(run_viewer(path("square.obj") + " --snapshot " + path("view.png")), 3);
+  EXPECT_NE(output_text().find("square.mtl: texture 'red_blue.png' does not exist"),
+            std::string::npos)
+      << output_text();
+  EXPECT_FALSE(std::filesystem::exists(path("view.png")));
 }
 
 }  // namespace

@@ -7,6 +7,8 @@
 #include "common/mesh_measures.h"
 #include "snapshot.h"
 
+#include <cgal_policies/Corner_attributes.h>
+
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
@@ -43,10 +45,13 @@ class Viewer {
         m_settings(start.settings),
         m_view(start.view),
         m_heat_map(start.heat_map),
+        m_texture(start.texture),
+        m_corner_values(cgal_policies::Corner_attributes<Point>(mesh).any_corner_values()),
         m_renderer(gl) {
     m_target =
         std::max<std::size_t>(1, std::size_t(std::llround(start.ratio * double(input_faces()))));
-    m_renderer.set_mesh(Scene_renderer::left, make_render_mesh(m_original, m_frame));
+    if (!show_corner_values(m_renderer, Scene_renderer::left, m_mesh, m_frame, m_texture))
+      m_renderer.set_mesh(Scene_renderer::left, make_render_mesh(m_original, m_frame));
     simplify(true);
   }
 
@@ -92,8 +97,10 @@ class Viewer {
     Simplify_settings settings = m_settings;
     settings.on_progress = [this](std::size_t faces) { m_progress_faces = faces; };
     m_progress_faces = input_faces();
-    // A fitted result cannot be replayed collapse by collapse: each target is run anew.
-    record = record && !m_fit;
+    // A fitted result cannot be replayed collapse by collapse, nor can one that carries the mesh's
+    // texture coordinates, normals or colours (a replay has the points only): each target is run
+    // anew.
+    record = record && !m_fit && !m_corner_values;
     m_recording = record;
     Policy_entry entry = m_fit ? with_fit(*m_policy) : *m_policy;
     m_simplifier.submit(
@@ -114,6 +121,7 @@ class Viewer {
           settings.target_faces = target;
           result.outcome = policy.run(result.mesh, settings);
           result.mesh.collect_garbage();
+          settle_corner_attributes(result.mesh, m_corner_values, result.outcome);
           return result;
         });
   }
@@ -141,8 +149,10 @@ class Viewer {
       for (double& e : errors) e *= 100 * m_frame.scale;  // percent of the diagonal
       m_legend_max = errors.empty() ? 0 : *std::max_element(errors.begin(), errors.end());
     }
-    m_renderer.set_mesh(Scene_renderer::right,
-                        make_render_mesh(mesh, m_frame, errors, m_legend_max));
+    if (m_heat_map || m_current->replay ||
+        !show_corner_values(m_renderer, Scene_renderer::right, m_current->mesh, m_frame, m_texture))
+      m_renderer.set_mesh(Scene_renderer::right,
+                          make_render_mesh(mesh, m_frame, errors, m_legend_max));
     m_error.reset();
     m_measurer.submit([this, mesh = std::move(mesh)] {
       return measure_mesh_error(m_mesh, mesh.to_mesh(), kViewerErrorSamples);
@@ -270,7 +280,9 @@ class Viewer {
   float m_panel_width = 0;         // in window coordinates, as the last frame laid it out
   double m_value_before_edit = 0;  // of the policy option being edited
   bool m_heat_map;
-  bool m_fit = false;  // run the policy's "+fit" entry (common/fitting.h)
+  const Texture_image* m_texture;  // for the meshes with texture coordinates; may be none
+  const bool m_corner_values;      // the input has texture coordinates, normals or colours
+  bool m_fit = false;              // run the policy's "+fit" entry (common/fitting.h)
   Scene_renderer m_renderer;
   Orbit_camera m_camera;
   std::size_t m_target = 1;

@@ -1,11 +1,13 @@
 // The interactive mesh_viewer: a GLFW window with the original and the simplified mesh side by
 // side (Scene_renderer.h) and a Dear ImGui panel (policy, its options, the target face count,
 // shading, wireframe, error heat map, live figures). Each policy's collapses are recorded once in
-// the background (collapse_recorder.h), so the target slider replays them at once.
+// the background (collapse_recorder.h), so the target slider replays them at once. A mesh with a
+// texture or colours is drawn with them, and so are the results that carry them.
 #ifndef CGAL_POLICIES_APPS_VIEWER_VIEWER_WINDOW_H
 #define CGAL_POLICIES_APPS_VIEWER_VIEWER_WINDOW_H
 
 #include "Scene_renderer.h"
+#include "Texture_image.h"
 #include "common/policy_registry.h"
 
 #include <cstddef>
@@ -20,6 +22,8 @@ struct Viewer_start {
   double ratio = 0.1;          // initial target, as a fraction of the input's faces
   View_options view;
   bool heat_map = false;
+  // Drawn on the meshes that have texture coordinates; must outlive the window.
+  const Texture_image* texture = nullptr;
 };
 
 // Returns once the window is closed; throws std::runtime_error when no window can be opened.

@@ -9,6 +9,8 @@
 #include "common/policy_command_line.h"
 #include "snapshot.h"
 
+#include <cgal_policies/Corner_attributes.h>
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -20,9 +22,12 @@ namespace {
 void print_help() {
   std::cout
       << "usage: mesh_viewer MESH [options]\n"
-         "Shows MESH (.off .obj .ply .stl) and its simplification side by side: drag to orbit,\n"
-         "right-drag or shift-drag to pan, wheel to zoom; the panel picks the policy, its options\n"
-         "and the target face count.\n\n"
+         "Shows MESH (.off .obj .ply .stl .gltf .glb) and its simplification side by side: drag\n"
+         "to orbit, right-drag or shift-drag to pan, wheel to zoom; the panel picks the policy, "
+         "its\n"
+         "options and the target face count. A mesh with texture coordinates and a texture (an\n"
+         "OBJ's map_Kd), or with colours, is drawn with them, and so is each simplification that\n"
+         "carries them.\n\n"
          "  --policy NAME         "
       << policy_names()
       << " (default classic)\n"
@@ -43,8 +48,10 @@ int write_snapshot_of(const Mesh& mesh, const Policy_choice& choice, double rati
   Simplify_settings settings = choice.settings;
   settings.target_faces = std::size_t(std::llround(ratio * double(mesh.number_of_faces())));
   Mesh simplified = mesh;
+  const bool had_corner_values = cgal_policies::Corner_attributes<Point>(mesh).any_corner_values();
   const Simplify_outcome outcome = choice.policy->run(simplified, settings);
   simplified.collect_garbage();
+  settle_corner_attributes(simplified, had_corner_values, outcome);
   caption_snapshot(mesh, simplified, choice.policy->name, snapshot);
   write_snapshot(mesh, simplified, snapshot, png);
   std::printf("%s: %zu -> %zu faces in %.3f s (%s); wrote %s (%dx%d)\n",
@@ -77,8 +84,10 @@ int run(int argc, char** argv) {
   if (png && std::filesystem::path(*png).extension() != ".png")
     throw App_error(exit_usage, *png + ": the snapshot must be a .png file");
 
-  Mesh mesh = read_triangle_mesh(args[0]);
+  Read_report report;
+  Mesh mesh = read_triangle_mesh(args[0], &report, Corner_attribute_reading::keep);
   mesh.collect_garbage();
+  snapshot.texture = texture_to_draw(mesh, report.materials);
   if (png) return write_snapshot_of(mesh, choice, ratio, snapshot, *png);
 
   Viewer_start start;
@@ -88,6 +97,7 @@ int run(int argc, char** argv) {
   start.ratio = ratio;
   start.view = snapshot.view;
   start.heat_map = snapshot.heat_map;
+  start.texture = snapshot.texture ? &*snapshot.texture : nullptr;
   run_viewer_window(mesh, start);
   return exit_success;
 }

@@ -4,6 +4,7 @@
 #include "Surface_distance.h"
 #include "common/App_error.h"
 #include "common/atomic_write.h"
+#include "common/material_texture.h"
 #include "common/mesh_measures.h"
 
 #include <cgal_policies/Corner_attributes.h>
@@ -14,6 +15,24 @@
 #include <cstdio>
 
 namespace apps {
+
+std::optional<Texture_image> texture_to_draw(const Mesh& mesh,
+                                             const Material_references& materials) {
+  if (!cgal_policies::Corner_attributes<Point>(mesh).uvs) return std::nullopt;
+  const std::optional<std::string> file = diffuse_texture_file(materials);
+  if (!file) return std::nullopt;
+  return Texture_image::load(*file);
+}
+
+bool show_corner_values(Scene_renderer& renderer, Scene_renderer::Pane pane, const Mesh& mesh,
+                        const Mesh_frame& frame, const Texture_image* texture) {
+  const cgal_policies::Corner_attributes<Point> attributes(mesh);
+  const bool textured = texture && attributes.uvs;
+  if (!textured && !attributes.colors) return false;
+  renderer.set_mesh(pane, make_corner_render_mesh(mesh, frame));
+  if (textured) renderer.set_texture(pane, texture);
+  return true;
+}
 
 void parse_snapshot_size(const std::string& text, Snapshot_settings& settings) {
   int width = 0, height = 0;
@@ -64,18 +83,11 @@ void write_snapshot(const Mesh& original, const Mesh& simplified, const Snapshot
   std::vector<std::uint8_t> pixels;
   {
     Scene_renderer renderer(gl);
-    // A pane draws the mesh's texture, or else its colours, when it has them.
-    const auto drawn_by_corner = [&](Scene_renderer::Pane pane, const Mesh& mesh) {
-      const cgal_policies::Corner_attributes<Point> attributes(mesh);
-      const bool textured = settings.texture && attributes.uvs;
-      if (!textured && !attributes.colors) return false;
-      renderer.set_mesh(pane, make_corner_render_mesh(mesh, frame));
-      if (textured) renderer.set_texture(pane, &*settings.texture);
-      return true;
-    };
-    if (!drawn_by_corner(Scene_renderer::left, original))
+    const Texture_image* texture = settings.texture ? &*settings.texture : nullptr;
+    if (!show_corner_values(renderer, Scene_renderer::left, original, frame, texture))
       renderer.set_mesh(Scene_renderer::left, make_render_mesh(left, frame));
-    if (settings.heat_map || !drawn_by_corner(Scene_renderer::right, compact)) {
+    if (settings.heat_map ||
+        !show_corner_values(renderer, Scene_renderer::right, compact, frame, texture)) {
       renderer.set_mesh(Scene_renderer::right,
                         make_render_mesh(right, frame, errors, captions.legend_max));
     }

@@ -5,6 +5,7 @@
 
 #include "Scene_renderer.h"
 #include "Texture_image.h"
+#include "common/mesh_io.h"
 
 #include <cstddef>
 #include <optional>
@@ -25,6 +26,18 @@ struct Snapshot_settings {
 // Face samples per direction for the viewer's error figures: a tenth of the apps' default keeps
 // them interactive (mesh_error gives the reference figures).
 constexpr std::size_t kViewerErrorSamples = 20000;
+
+// The texture a mesh read with its corner attributes is drawn with: the diffuse map its materials
+// name, when it has texture coordinates. App_error(exit_bad_input) when that file is missing or is
+// not an image, so that an app says so before any work.
+std::optional<Texture_image> texture_to_draw(const Mesh& mesh,
+                                             const Material_references& materials);
+
+// Gives `pane` the mesh's corners with their texture (when `texture` is given and the mesh has
+// texture coordinates), or else with their colours; false, and the pane left as it was, when the
+// mesh has neither.
+bool show_corner_values(Scene_renderer& renderer, Scene_renderer::Pane pane, const Mesh& mesh,
+                        const Mesh_frame& frame, const Texture_image* texture);
 
 // Reads --size's "WxH" (16 to 16384 pixels each); App_error(exit_usage) otherwise.
 void parse_snapshot_size(const std::string& text, Snapshot_settings& settings);
