@@ -452,8 +452,8 @@ class Two_sided_fitter {
       std::vector<Matched_output_sample> matched;
       const double total_area = output_area();
       if (!(total_area > 0)) return matched;
-      // A face with no input triangle near it yet starts from one under an input sample matched to
-      // it, a few steps of a walk from its own samples.
+      // In the first round a face has no input triangle of its own yet: its walks start from the
+      // triangle of an input sample matched to it, which lies near the face.
       for (std::size_t s = 0; s < m_sample_face.size(); ++s) {
         if (m_sample_face[s] == internal::kFitNoFace) continue;
         std::size_t& hint = m_face_hint[m_sample_face[s]];
