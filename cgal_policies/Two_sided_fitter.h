@@ -25,7 +25,8 @@
 //   tangent_weight        in [0, 1], how much a match's distance across its direction counts: 1 is
 //                         the plain distance to the matched point (default 0.001)
 //   target_mean           reweight toward the mean distance rather than the RMS (default false)
-//   max_normal_angle_deg  in (0, 180] (default 90)
+//   max_normal_angle_deg  in [0, 180], as --max-normal-angle takes it; 0: no face normal may turn
+//                         (default 90)
 //   min_input_samples     the input is sampled at least this densely, >= 1 (default 100000)
 //   tolerance             >= 0, a fraction of the input's bounding-box diagonal; 0: unbounded
 // The input must outlive the fitter; output and input are triangle meshes of the same type, their
@@ -105,7 +106,7 @@ class Two_sided_fitter {
     CGAL_precondition(options.rounds >= 0);
     CGAL_precondition(options.trust_fraction > 0);
     CGAL_precondition(options.tangent_weight >= 0 && options.tangent_weight <= 1);
-    CGAL_precondition(options.max_normal_angle_deg > 0 && options.max_normal_angle_deg <= 180);
+    CGAL_precondition(options.max_normal_angle_deg >= 0 && options.max_normal_angle_deg <= 180);
     CGAL_precondition(options.tolerance >= 0);
     CGAL_precondition(options.min_input_samples >= 1);
   }

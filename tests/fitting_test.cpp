@@ -5,6 +5,8 @@
 #include <cgal_policies/internal/Border_curve.h>
 #include <cgal_policies/internal/Fit_guard.h>
 
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -129,6 +131,26 @@ TEST(TwoSidedFitter, ACoarseSphereInsideAFineOneMovesEveryVertexTowardIt) {
     EXPECT_LT(std::abs(radius(output.point(v)) - 1), std::abs(radius(before.point(v)) - 1));
   EXPECT_LT(mean_distance_to_unit_sphere(output), 0.5 * mean_distance_to_unit_sphere(before));
   EXPECT_TRUE(is_valid_triangle_mesh(output));
+}
+
+// --max-normal-angle takes 0 (found by fuzz_policies: the fitter's contract started above 0).
+TEST(TwoSidedFitter, AtAZeroAngleNoFaceNormalTurns) {
+  const Mesh input = flat_grid(16);
+  Mesh output = scaled(flat_grid(4), 4);
+  for (auto v : vertices(output))
+    if (!CGAL::is_border(v, output)) {
+      const Point& p = output.point(v);
+      output.point(v) = Point(p.x(), p.y(), 0.25);
+    }
+  const Mesh before = output;
+  Two_sided_fit_options options = few_samples();
+  options.max_normal_angle_deg = 0;
+  Two_sided_fitter<Mesh>(input, options).fit(output);
+  for (auto f : faces(output)) {
+    const auto n = CGAL::Polygon_mesh_processing::compute_face_normal(f, output);
+    const auto m = CGAL::Polygon_mesh_processing::compute_face_normal(f, before);
+    EXPECT_EQ(n, m) << f;
+  }
 }
 
 TEST(TwoSidedFitter, TwoFitsOfTheSameMeshesGiveTheSamePoints) {
