@@ -71,14 +71,20 @@ TEST(TwoSidedFitter, ACoarsePlaneOnThePlaneItApproximatesStaysExactlyAsItIs) {
     EXPECT_EQ(halfedge(f, output), halfedge(f, before)) << "connectivity changed";
 }
 
+// flat_grid(16)'s square, coarser, its inner vertices lifted to z = 0.25.
+Mesh lifted_coarse_plane() {
+  Mesh mesh = scaled(flat_grid(4), 4);
+  for (auto v : vertices(mesh))
+    if (!CGAL::is_border(v, mesh)) {
+      const Point& p = mesh.point(v);
+      mesh.point(v) = Point(p.x(), p.y(), 0.25);
+    }
+  return mesh;
+}
+
 TEST(TwoSidedFitter, ACoarsePlaneLiftedOffItsPlaneComesBackToIt) {
   const Mesh input = flat_grid(16);
-  Mesh output = scaled(flat_grid(4), 4);
-  for (auto v : vertices(output))
-    if (!CGAL::is_border(v, output)) {
-      const Point& p = output.point(v);
-      output.point(v) = Point(p.x(), p.y(), 0.25);
-    }
+  Mesh output = lifted_coarse_plane();
   const Two_sided_fit_report report = Two_sided_fitter<Mesh>(input, few_samples()).fit(output);
   EXPECT_GE(report.rounds, 1);
   EXPECT_TRUE(is_valid_triangle_mesh(output));
@@ -136,12 +142,7 @@ TEST(TwoSidedFitter, ACoarseSphereInsideAFineOneMovesEveryVertexTowardIt) {
 // --max-normal-angle takes 0 (found by fuzz_policies: the fitter's contract started above 0).
 TEST(TwoSidedFitter, AtAZeroAngleNoFaceNormalTurns) {
   const Mesh input = flat_grid(16);
-  Mesh output = scaled(flat_grid(4), 4);
-  for (auto v : vertices(output))
-    if (!CGAL::is_border(v, output)) {
-      const Point& p = output.point(v);
-      output.point(v) = Point(p.x(), p.y(), 0.25);
-    }
+  Mesh output = lifted_coarse_plane();
   const Mesh before = output;
   Two_sided_fit_options options = few_samples();
   options.max_normal_angle_deg = 0;
