@@ -33,30 +33,30 @@ class Border_curve {
     std::vector<std::pair<Halfedge, std::uint32_t>> index;
     for (Halfedge h : halfedges(tm)) {
       if (!CGAL::is_border(h, tm)) continue;
-      index.emplace_back(h, std::uint32_t(m_ends.size()));
-      m_ends.push_back({to_eigen(get(vpm, source(h, tm))), to_eigen(get(vpm, target(h, tm)))});
+      index.emplace_back(h, std::uint32_t(m_segments.size()));
+      const Eigen::Vector3d a = to_eigen(get(vpm, source(h, tm)));
+      const Eigen::Vector3d b = to_eigen(get(vpm, target(h, tm)));
+      m_segments.emplace_back(Search_kernel::Point_3(a.x(), a.y(), a.z()),
+                              Search_kernel::Point_3(b.x(), b.y(), b.z()));
     }
-    if (m_ends.empty()) return;
+    if (m_segments.empty()) return;
     std::sort(index.begin(), index.end());
     const auto index_of = [&](Halfedge h) {
       return std::lower_bound(index.begin(), index.end(), std::make_pair(h, std::uint32_t(0)))
           ->second;
     };
-    m_next.resize(m_ends.size());
-    m_previous.resize(m_ends.size());
+    m_next.resize(m_segments.size());
+    m_previous.resize(m_segments.size());
     for (const auto& [h, i] : index) {
       const std::uint32_t j = index_of(next(h, tm));  // the border's next edge is a border edge
       m_next[i] = j;
       m_previous[j] = i;
     }
-    for (const auto& [a, b] : m_ends)
-      m_segments.emplace_back(Search_kernel::Point_3(a.x(), a.y(), a.z()),
-                              Search_kernel::Point_3(b.x(), b.y(), b.z()));
     m_tree.rebuild(m_segments.begin(), m_segments.end());
     m_tree.accelerate_distance_queries();
   }
 
-  bool empty() const { return m_ends.empty(); }
+  bool empty() const { return m_segments.empty(); }
 
   double distance(const Eigen::Vector3d& p) const {
     const auto q = m_tree.closest_point(Search_kernel::Point_3(p.x(), p.y(), p.z()));
@@ -77,24 +77,29 @@ class Border_curve {
       for (std::uint32_t i = step[first]; arc < reach && i != first; i = step[i]) {
         const Eigen::Vector3d q = nearest_on(i, to);
         if ((q - to).squaredNorm() < (best - to).squaredNorm()) best = q;
-        arc += (m_ends[i].second - m_ends[i].first).norm();
+        arc += (point(i, 1) - point(i, 0)).norm();
       }
     };
-    walk(m_next, (m_ends[first].second - on).norm());
-    walk(m_previous, (on - m_ends[first].first).norm());
+    walk(m_next, (point(first, 1) - on).norm());
+    walk(m_previous, (on - point(first, 0)).norm());
     return best;
   }
 
  private:
+  // End 0 (the source) or 1 (the target) of border edge i.
+  Eigen::Vector3d point(std::uint32_t i, int end) const {
+    const Search_kernel::Point_3& p = m_segments[i].vertex(end);
+    return {p.x(), p.y(), p.z()};
+  }
+
   Eigen::Vector3d nearest_on(std::uint32_t i, const Eigen::Vector3d& p) const {
-    const Eigen::Vector3d& a = m_ends[i].first;
-    const Eigen::Vector3d ab = m_ends[i].second - a;
+    const Eigen::Vector3d a = point(i, 0);
+    const Eigen::Vector3d ab = point(i, 1) - a;
     const double length2 = ab.squaredNorm();
     const double t = length2 > 0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
     return a + t * ab;
   }
 
-  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> m_ends;  // source, target
   std::vector<std::uint32_t> m_next, m_previous;  // the adjacent edges along the border
   Segments m_segments;
   Tree m_tree;
