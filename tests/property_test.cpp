@@ -175,6 +175,32 @@ TEST_P(EveryPolicy, CollapsesAnIcosahedronToATetrahedronAtMost) {
   EXPECT_TRUE(apps::check_mesh_validity(mesh).valid);
 }
 
+TEST_P(EveryPolicy, GoesOnPastAVertexWhoseFacesAllHaveZeroArea) {
+  // An icosahedron with one face a b c made flat (c moved onto the middle of a b) and split at a
+  // point of a b: the new vertex's three faces have zero area (under CGAL's gh, a zero quadric),
+  // every other face keeps an area.
+  Mesh mesh = icosahedron();
+  const Mesh::Halfedge_index h = mesh.halfedge(*mesh.faces().begin());
+  // a and b on a grid of sixteenths, so that the three points lie on a line exactly.
+  const auto on_grid = [&](Mesh::Vertex_index u) {
+    const Point& p = mesh.point(u);
+    return mesh.point(u) = Point(std::round(p.x() * 16) / 16, std::round(p.y() * 16) / 16,
+                                 std::round(p.z() * 16) / 16);
+  };
+  const Point a = on_grid(mesh.source(h)), b = on_grid(mesh.target(h));
+  mesh.point(mesh.target(mesh.next(h))) = CGAL::midpoint(a, b);
+  const Mesh::Halfedge_index split = CGAL::Euler::add_center_vertex(h, mesh);
+  mesh.point(mesh.target(split)) = CGAL::barycenter(a, 3, b, 1);
+  const apps::Policy_entry& entry = *apps::find_policy(GetParam());
+  apps::Simplify_settings settings = apps::default_settings(entry, 20);
+  if (settings.options.count("tolerance")) settings.options["tolerance"] = 10;
+  const apps::Simplify_outcome outcome = entry.run(mesh, settings);
+  mesh.collect_garbage();
+  EXPECT_EQ(outcome.stop_reason, apps::Stop_reason::target_reached);
+  EXPECT_EQ(mesh.number_of_faces(), 20u);
+  EXPECT_TRUE(apps::check_mesh_validity(mesh).valid);
+}
+
 TEST_P(EveryPolicy, LeavesAMeshAtItsTargetUntouched) {
   Mesh mesh = icosahedron();
   const Mesh before = mesh;
