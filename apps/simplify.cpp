@@ -190,10 +190,7 @@ int run(int argc, char** argv) {
     outcome = policy->run(mesh, settings);
   }
   mesh.collect_garbage();
-  const char* attributes = settle_corner_attributes(mesh, input_had_corner_values, outcome);
-  if (!quiet && std::string(attributes) == "dropped")
-    std::cerr << "simplify: " << input << ": texture coordinates, normals and colours dropped (the "
-              << policy->name << " policy cannot carry them)\n";
+  const char* attributes = corner_attributes_word(input_had_corner_values, outcome);
   const Dropped_components vanished =
       request.drop_small_pieces && outcome.stop_reason == Stop_reason::no_collapse_left
           ? drop_smallest_components_until(mesh, settings.target_faces)

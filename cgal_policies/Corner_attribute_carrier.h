@@ -21,6 +21,7 @@
 #define CGAL_POLICIES_CORNER_ATTRIBUTE_CARRIER_H
 
 #include <cgal_policies/Corner_attributes.h>
+#include <cgal_policies/internal/seam_collapse_rule.h>
 #include <cgal_policies/internal/triangle_closest_point.h>
 
 #include <CGAL/boost/graph/iterator.h>
@@ -72,23 +73,29 @@ class Corner_attribute_carrier {
   // seam vertex, or nowhere.
   template <class Profile>
   std::optional<Point> seam_placement(const Profile& profile, const Point& proposed) const {
-    const std::size_t seams0 = seam_edges_at(profile.v0()), seams1 = seam_edges_at(profile.v1());
-    if (seams0 == 0 && seams1 == 0) return proposed;
-    if (seams0 == 0) return profile.p1();
-    if (seams1 == 0) return profile.p0();
     const Halfedge edge = profile.v0_v1();
-    if (!is_seam_edge(edge)) return std::nullopt;
-    for (Halfedge h : {edge, m_mesh->opposite(edge)})
-      if (!m_mesh->is_border(h) && is_seam_edge(m_mesh->next(h)) && is_seam_edge(m_mesh->prev(h)))
-        return std::nullopt;
-    const bool along0 = seams0 == 2, along1 = seams1 == 2;
-    if (along0 && along1)
-      return CGAL::squared_distance(proposed, profile.p0()) <
-                     CGAL::squared_distance(proposed, profile.p1())
-                 ? profile.p0()
-                 : profile.p1();
-    if (along0) return profile.p1();
-    if (along1) return profile.p0();
+    const auto closes_chart = [&] {
+      for (Halfedge h : {edge, m_mesh->opposite(edge)})
+        if (!m_mesh->is_border(h) && is_seam_edge(m_mesh->next(h)) && is_seam_edge(m_mesh->prev(h)))
+          return true;
+      return false;
+    };
+    switch (internal::seam_collapse_rule(
+        seam_edges_at(profile.v0()), seam_edges_at(profile.v1()),
+        [&] { return is_seam_edge(edge); }, closes_chart,
+        [&] {
+          return CGAL::squared_distance(proposed, profile.p0()) <
+                 CGAL::squared_distance(proposed, profile.p1());
+        })) {
+      case internal::Seam_placement::anywhere:
+        return proposed;
+      case internal::Seam_placement::at_first:
+        return profile.p0();
+      case internal::Seam_placement::at_second:
+        return profile.p1();
+      case internal::Seam_placement::nowhere:
+        break;
+    }
     return std::nullopt;
   }
 

@@ -45,9 +45,11 @@ using Carrier = cgal_policies::Corner_attribute_carrier<apps::Point>;
 // [0, 1] that vary with the point and the chart.
 void paint_corner_attributes(apps::Mesh& mesh, std::uint8_t mode) {
   if (!(mode & 1)) return;
-  const Attributes attributes = Attributes::add(mesh, {true, true, true, false});
+  const Attributes attributes = Attributes::add(mesh, {true, true, true, true});
   const int axis = (mode >> 1) % 3, charts = 1 + (mode >> 3) % 4;
   for (const auto f : mesh.faces()) {
+    // A label that every policy keeps on the face, fast's rebuilt ones too.
+    (*attributes.materials)[f] = std::uint32_t(f);
     const int chart = int((std::size_t(f) * 2654435761u >> (mode >> 5)) % std::size_t(charts));
     for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
       const apps::Point& p = mesh.point(mesh.target(h));
@@ -59,9 +61,10 @@ void paint_corner_attributes(apps::Mesh& mesh, std::uint8_t mode) {
   }
 }
 
-// The texture orientation of every face and the points of the seam corners, before a run.
+// The texture orientation of every face (by its label) and the points of the seam corners, before a
+// run.
 struct Seam_record {
-  std::map<apps::Mesh::Face_index, double> uv_areas;
+  std::map<std::uint32_t, double> uv_areas;  // by the face's label (its material)
   std::vector<apps::Point> seam_corners;
 };
 
@@ -69,7 +72,8 @@ Seam_record record_seams(apps::Mesh& mesh) {
   Seam_record record;
   const Attributes attributes(mesh);
   if (!attributes.uvs) return record;
-  for (const auto f : mesh.faces()) record.uv_areas[f] = attributes.face_uv_area(mesh, f);
+  for (const auto f : mesh.faces())
+    record.uv_areas[(*attributes.materials)[f]] = attributes.face_uv_area(mesh, f);
   const Carrier carrier(mesh);
   for (const auto v : mesh.vertices()) {
     const std::size_t seams = carrier.seam_edges_at(v);
@@ -88,7 +92,8 @@ void require_seams_kept(const apps::Mesh& mesh, const Seam_record& record, const
       for (const double c : (*attributes.colors)[h])
         require(c >= 0 && c <= 1, run + ": colours within [0, 1]");
     }
-    const double before = record.uv_areas.at(f), after = attributes.face_uv_area(mesh, f);
+    const double before = record.uv_areas.at((*attributes.materials)[f]),
+                 after = attributes.face_uv_area(mesh, f);
     require(before == 0 || before * after > 0, run + ": no texture triangle turned over");
   }
   std::set<apps::Point> points;

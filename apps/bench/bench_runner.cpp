@@ -76,8 +76,8 @@ Run_record run_policy(const Mesh& original, const Policy_entry& policy, const Be
       record.stop_reason = to_string(outcome.stop_reason);
       record.fit_flips = outcome.fit_flips;
       if (plan.attributes)
-        record.attributes = settle_corner_attributes(
-            mesh, cgal_policies::Corner_attributes<Point>(original).any_corner_values(), outcome);
+        record.attributes = corner_attributes_word(
+            cgal_policies::Corner_attributes<Point>(original).any_corner_values(), outcome);
       result = std::move(mesh);
     } else if (mesh.number_of_faces() != result.number_of_faces()) {
       std::fprintf(stderr, "simplify_bench: %s: %s is not deterministic (%zu then %zu faces)\n",

@@ -54,7 +54,7 @@ struct Run_record {
   std::size_t fit_flips = 0;
   Mesh_error error;
   Mesh_validity validity;
-  // With Bench_plan::attributes: "carried", "dropped" or "none" (settle_corner_attributes), and the
+  // With Bench_plan::attributes: "carried" or "none" (corner_attributes_word), and the
   // error of the carried attributes.
   std::string attributes;
   Attribute_error attribute_error;

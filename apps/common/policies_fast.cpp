@@ -1,9 +1,11 @@
 // The fast threshold QEM (docs/fast.md): it runs its own flat-array engine, not edge_collapse, and
-// is timed and reported like the others (conversions to and from the arrays included).
+// is timed and reported like the others (conversions to and from the arrays included, with the
+// corner attributes when the mesh has them).
 #include "Policy_options_table.h"
 #include "Stopwatch.h"
 #include "policy_entries.h"
 
+#include <cgal_policies/Corner_attributes.h>
 #include <cgal_policies/Fast_threshold_simplifier.h>
 
 namespace apps {
@@ -30,6 +32,8 @@ Simplify_outcome run_fast(Mesh& mesh, const Simplify_settings& settings) {
       options)(mesh, settings.target_faces, settings.on_progress);
   Simplify_outcome outcome;
   outcome.seconds = watch.seconds();
+  // The simplifier carries whatever corner values the mesh has (it re-adds their maps).
+  outcome.attributes_carried = cgal_policies::Corner_attributes<Point>(mesh).any_corner_values();
   outcome.stop_reason =
       report.target_reached ? Stop_reason::target_reached : Stop_reason::no_collapse_left;
   return outcome;

@@ -4,10 +4,9 @@
 #include "Json_object.h"
 #include "policy_entries.h"
 
-#include <cgal_policies/Corner_attributes.h>
-
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace apps {
 namespace {
@@ -65,12 +64,11 @@ Simplify_settings default_settings(const Policy_entry& policy, std::size_t targe
   return settings;
 }
 
-const char* settle_corner_attributes(Mesh& mesh, bool input_had_them,
-                                     const Simplify_outcome& outcome) {
+const char* corner_attributes_word(bool input_had_them, const Simplify_outcome& outcome) {
   if (!input_had_them) return "none";
-  if (outcome.attributes_carried) return "carried";
-  cgal_policies::Corner_attributes<Point>::remove_corner_values(mesh);
-  return "dropped";
+  if (!outcome.attributes_carried)
+    throw std::logic_error("a policy of the registry did not carry the corner attributes");
+  return "carried";
 }
 
 void check_policy_options(const Policy_entry& policy, const Option_values& values) {

@@ -82,11 +82,10 @@ const Policy_entry* find_policy(const std::string& name);
 // "gh|gh-prob|lt|classic": for help texts and error messages.
 std::string policy_names();
 
-// What became of a run's corner attributes: "carried" when it carried the input's texture
-// coordinates and normals through its collapses; "dropped" (and removed from `mesh`) when it could
-// not; "none" when the input had none.
-const char* settle_corner_attributes(Mesh& mesh, bool input_had_them,
-                                     const Simplify_outcome& outcome);
+// The JSON's word for a run's corner attributes: "carried" when the input had texture coordinates,
+// normals or colours (every policy of the registry carries them through its collapses), "none"
+// when it had none.
+const char* corner_attributes_word(bool input_had_them, const Simplify_outcome& outcome);
 
 // Settings with the policy's option defaults, for callers that set nothing else.
 Simplify_settings default_settings(const Policy_entry& policy, std::size_t target_faces);

@@ -121,7 +121,6 @@ class Viewer {
           settings.target_faces = target;
           result.outcome = policy.run(result.mesh, settings);
           result.mesh.collect_garbage();
-          settle_corner_attributes(result.mesh, m_corner_values, result.outcome);
           return result;
         });
   }

@@ -9,8 +9,6 @@
 #include "common/policy_command_line.h"
 #include "snapshot.h"
 
-#include <cgal_policies/Corner_attributes.h>
-
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -48,10 +46,8 @@ int write_snapshot_of(const Mesh& mesh, const Policy_choice& choice, double rati
   Simplify_settings settings = choice.settings;
   settings.target_faces = std::size_t(std::llround(ratio * double(mesh.number_of_faces())));
   Mesh simplified = mesh;
-  const bool had_corner_values = cgal_policies::Corner_attributes<Point>(mesh).any_corner_values();
   const Simplify_outcome outcome = choice.policy->run(simplified, settings);
   simplified.collect_garbage();
-  settle_corner_attributes(simplified, had_corner_values, outcome);
   caption_snapshot(mesh, simplified, choice.policy->name, snapshot);
   write_snapshot(mesh, simplified, snapshot, png);
   std::printf("%s: %zu -> %zu faces in %.3f s (%s); wrote %s (%dx%d)\n",

@@ -5,6 +5,8 @@
 
 #include <cgal_policies/internal/Quadric.h>
 #include <cgal_policies/internal/quadric_placement.h>
+#include <cgal_policies/internal/seam_collapse_rule.h>
+#include <cgal_policies/internal/triangle_closest_point.h>
 
 #include <CGAL/assertions.h>
 
@@ -36,8 +38,23 @@ struct Fast_threshold_vertex {
   bool border = false;
 };
 
+// No corner values: the engine moves points only.
+struct No_corner_values {
+  struct Values {};
+  static Values blend(const std::array<Values, 3>&, const std::array<double, 3>&) { return {}; }
+  static bool same(const Values&, const Values&) { return true; }
+  static double uv_area(const Values&, const Values&, const Values&) { return 0; }
+};
+
+// Corners: the values a triangle holds at its corners (Values), how they blend at barycentric
+// weights, when two are the same, and the signed area of their texture triangle (NaN without
+// texture coordinates), as No_corner_values spells them. With values (set_corner_values), the
+// collapses keep the seam rules of Corner_attribute_carrier (docs/attributes.md).
+template <class Corners = No_corner_values>
 class Fast_threshold_engine {
  public:
+  using Values = typename Corners::Values;
+
   // t_k = kThresholdScale (k + 3)^a D^2: [FQMS]'s schedule, made relative to D^2.
   static constexpr double kThresholdScale = 1e-9;
   // Errors below this fraction of D^2 are round-off: the lossless mode collapses only those.
@@ -64,6 +81,17 @@ class Fast_threshold_engine {
     m_mark.assign(m_vertices.size(), 0);
   }
 
+  // The values at each triangle's corners, in the constructor's order; from then on the
+  // collapses carry them. The borders count as seams: a border vertex stays where it is or slides
+  // along the border to a neighbour's point.
+  void set_corner_values(std::vector<std::array<Values, 3>> corners) {
+    CGAL_precondition(corners.size() == m_triangles.size());
+    m_corners = std::move(corners);
+    m_origins.resize(m_triangles.size());
+    for (std::size_t t = 0; t < m_origins.size(); ++t) m_origins[t] = int(t);
+    m_seam_counts.assign(m_vertices.size(), kUnknownSeams);
+  }
+
   struct Outcome {
     std::size_t passes = 0;
     bool target_reached = false;
@@ -73,7 +101,8 @@ class Fast_threshold_engine {
                    const std::function<void(std::size_t)>& on_progress = {}) {
     CGAL_precondition(settings.aggressiveness > 0 && settings.compaction_period > 0);
     m_cos_max_angle = std::cos(settings.max_normal_angle_deg * (std::acos(-1.0) / 180.0));
-    for (Triangle& t : m_triangles) compute_errors(t);
+    if (carries_values()) compact();  // the seam tests walk the reference lists
+    for (std::size_t t = 0; t < m_triangles.size(); ++t) compute_errors(t);
 
     Outcome outcome;
     double k = 0;  // a double: empty passes are skipped by jumping k
@@ -142,7 +171,10 @@ class Fast_threshold_engine {
 
   std::size_t face_count() const { return m_live_triangles; }
 
-  void extract(std::vector<Eigen::Vector3d>& points, std::vector<std::array<int, 3>>& triangles) {
+  // With corner values: `corners` and `origins` (the constructor's index of each triangle) too.
+  void extract(std::vector<Eigen::Vector3d>& points, std::vector<std::array<int, 3>>& triangles,
+               std::vector<std::array<Values, 3>>* corners = nullptr,
+               std::vector<int>* origins = nullptr) {
     compact();
     std::vector<int> index(m_vertices.size(), -1);
     points.clear();
@@ -154,6 +186,8 @@ class Fast_threshold_engine {
     triangles.clear();
     for (const Triangle& t : m_triangles)
       triangles.push_back({index[t.v[0]], index[t.v[1]], index[t.v[2]]});
+    if (corners) *corners = m_corners;
+    if (origins) *origins = m_origins;
   }
 
  private:
@@ -177,28 +211,56 @@ class Fast_threshold_engine {
     int corner;  // v's position in the triangle
   };
 
-  // With one end on the border, the merged vertex stays at that end.
-  double edge_error(int a, int b, Eigen::Vector3d& placement) const {
+  bool carries_values() const { return !m_corners.empty(); }
+
+  // The error of merging a and b, an edge of triangle `on`, and where the merged vertex goes. With
+  // one end on the border, it stays at that end. With corner values the seam rules choose, and an
+  // edge they refuse costs infinity.
+  double edge_error(int a, int b, std::size_t on, Eigen::Vector3d& placement) {
     const Fast_threshold_vertex& va = m_vertices[a].data;
     const Fast_threshold_vertex& vb = m_vertices[b].data;
     const Quadric q = va.quadric + vb.quadric;
-    if (va.border != vb.border)
-      placement = va.border ? va.point : vb.point;
-    else
+    constexpr double kRefused = std::numeric_limits<double>::infinity();
+    if (carries_values()) {
       placement = optimal_placement(q, va.point, vb.point).point;
+      switch (seam_collapse_rule(
+          seam_count(a), seam_count(b), [&] { return is_seam_edge(on, a, b); },
+          [&] { return closes_chart(a, b); },
+          [&] {
+            return (placement - va.point).squaredNorm() < (placement - vb.point).squaredNorm();
+          })) {
+        case Seam_placement::anywhere:
+          break;
+        case Seam_placement::at_first:
+          placement = va.point;
+          break;
+        case Seam_placement::at_second:
+          placement = vb.point;
+          break;
+        case Seam_placement::nowhere:
+          return kRefused;
+      }
+    } else if (va.border != vb.border) {
+      placement = va.border ? va.point : vb.point;
+    } else {
+      placement = optimal_placement(q, va.point, vb.point).point;
+    }
     const double error = q.evaluate(placement);
-    return std::isfinite(error) ? (std::max)(0.0, error) : std::numeric_limits<double>::infinity();
+    return std::isfinite(error) ? (std::max)(0.0, error) : kRefused;
   }
 
-  void compute_errors(Triangle& t) {
+  void compute_errors(std::size_t t) {
+    Triangle& triangle = m_triangles[t];
     Eigen::Vector3d unused;
-    for (int j = 0; j < 3; ++j) t.error[j] = edge_error(t.v[j], t.v[(j + 1) % 3], unused);
-    t.min_error = (std::min)({t.error[0], t.error[1], t.error[2]});
-    t.refused = false;
+    for (int j = 0; j < 3; ++j)
+      triangle.error[j] = edge_error(triangle.v[j], triangle.v[(j + 1) % 3], t, unused);
+    triangle.min_error = (std::min)({triangle.error[0], triangle.error[1], triangle.error[2]});
+    triangle.refused = false;
   }
 
   // m_star_errors: this collapse's errors by the edge's other end (each edge is in two triangles).
-  void refresh_corner(Triangle& t, int at) {
+  void refresh_corner(std::size_t triangle, int at) {
+    Triangle& t = m_triangles[triangle];
     for (int j : {at, (at + 2) % 3}) {
       const int other = t.v[j == at ? (at + 1) % 3 : j];
       const auto known = std::find_if(m_star_errors.begin(), m_star_errors.end(),
@@ -207,7 +269,7 @@ class Fast_threshold_engine {
         t.error[j] = known->second;
       } else {
         Eigen::Vector3d unused;
-        t.error[j] = edge_error(t.v[at], other, unused);
+        t.error[j] = edge_error(t.v[at], other, triangle, unused);
         m_star_errors.emplace_back(other, t.error[j]);
       }
     }
@@ -318,9 +380,11 @@ class Fast_threshold_engine {
     const int a = m_triangles[triangle].v[corner];
     const int b = m_triangles[triangle].v[(corner + 1) % 3];
     Eigen::Vector3d p;
-    edge_error(a, b, p);
+    const double error = edge_error(a, b, triangle, p);
+    if (carries_values() && !std::isfinite(error)) return false;  // refused by the seam rules
     if (!satisfies_link_condition(a, b) || turns_too_far(a, b, p) || turns_too_far(b, a, p))
       return false;
+    if (carries_values() && !plan_corner_values(a, b, p)) return false;
 
     Vertex& va = m_vertices[a];
     Vertex& vb = m_vertices[b];
@@ -329,7 +393,6 @@ class Fast_threshold_engine {
     va.data.border = va.data.border || vb.data.border;
     vb.removed = true;
     const int first = int(m_references.size());
-    m_star_errors.clear();
     for (int from : {a, b}) {
       // Indices, not pointers: push_back below may move m_references.
       const int begin = m_vertices[from].first_reference;
@@ -345,20 +408,162 @@ class Fast_threshold_engine {
         }
         t.v[r.corner] = a;
         t.dirty = true;
-        refresh_corner(t, r.corner);
         m_references.push_back(r);
       }
     }
     va.first_reference = first;
     va.reference_count = int(m_references.size()) - first;
+    if (carries_values()) {
+      for (const Planned_corner& planned : m_planned)
+        m_corners[planned.triangle][planned.corner] = planned.values;
+      for (const Reference* r = references_begin(a); r != references_end(a); ++r)
+        for (int v : m_triangles[r->triangle].v) m_seam_counts[v] = kUnknownSeams;
+    }
+    // Errors after the whole star is rewired: the seam tests look across its edges.
+    m_star_errors.clear();
+    for (const Reference* r = references_begin(a); r != references_end(a); ++r)
+      refresh_corner(std::size_t(r->triangle), r->corner);
     return true;
+  }
+
+  // The triangle other than `t` on the edge of u and w, or -1 on a border.
+  int other_triangle(std::size_t t, int u, int w) const {
+    for (const Reference* r = references_begin(u); r != references_end(u); ++r)
+      if (std::size_t(r->triangle) != t && !m_triangles[r->triangle].deleted &&
+          contains(m_triangles[r->triangle], w))
+        return r->triangle;
+    return -1;
+  }
+
+  static int corner_of(const Triangle& t, int v) { return t.v[0] == v ? 0 : t.v[1] == v ? 1 : 2; }
+
+  // Whether the two sides of the edge of u and w (of triangle t) disagree at either end, or it is a
+  // border: a seam edge.
+  bool is_seam_edge(std::size_t t, int u, int w) const {
+    const int other = other_triangle(t, u, w);
+    if (other < 0) return true;
+    const Triangle &here = m_triangles[t], &there = m_triangles[std::size_t(other)];
+    for (int v : {u, w})
+      if (!Corners::same(m_corners[t][corner_of(here, v)],
+                         m_corners[std::size_t(other)][corner_of(there, v)]))
+        return true;
+    return false;
+  }
+
+  // Remembered per vertex, forgotten around each collapse.
+  std::size_t seam_count(int v) {
+    int& count = m_seam_counts[v];
+    if (count != kUnknownSeams) return std::size_t(count);
+    count = 0;
+    for (const Reference* r = references_begin(v); r != references_end(v); ++r) {
+      const Triangle& t = m_triangles[r->triangle];
+      if (t.deleted) continue;
+      // Each edge at v leaves v in one triangle, but a border edge may only enter it.
+      const int next = t.v[(r->corner + 1) % 3], previous = t.v[(r->corner + 2) % 3];
+      count += is_seam_edge(std::size_t(r->triangle), v, next) ? 1 : 0;
+      count += other_triangle(std::size_t(r->triangle), previous, v) < 0 ? 1 : 0;
+    }
+    return std::size_t(count);
+  }
+
+  // Whether a triangle on the edge of a and b has its two other edges on seams.
+  bool closes_chart(int a, int b) const {
+    for (const Reference* r = references_begin(a); r != references_end(a); ++r) {
+      const Triangle& t = m_triangles[r->triangle];
+      if (t.deleted || !contains(t, b)) continue;
+      const int c = t.v[0] != a && t.v[0] != b   ? t.v[0]
+                    : t.v[1] != a && t.v[1] != b ? t.v[1]
+                                                 : t.v[2];
+      const std::size_t at = std::size_t(r->triangle);
+      if (is_seam_edge(at, a, c) && is_seam_edge(at, b, c)) return true;
+    }
+    return false;
+  }
+
+  // m_planned: the values each corner at a or b takes when they merge at p, interpolated at the
+  // closest point of the old triangles on its own side of the seams. False when a texture
+  // triangle would turn over or become flat.
+  bool plan_corner_values(int a, int b, const Eigen::Vector3d& p) {
+    m_planned.clear();
+    m_star.clear();
+    for (int v : {a, b})
+      for (const Reference* r = references_begin(v); r != references_end(v); ++r)
+        if (!m_triangles[r->triangle].deleted && (v == a || !contains(m_triangles[r->triangle], a)))
+          m_star.push_back(*r);
+    // The sides: triangles joined across the edges at a or b that are not seams.
+    m_sides.resize(m_star.size());
+    for (std::size_t i = 0; i < m_star.size(); ++i) m_sides[i] = i;
+    const auto root = [this](std::size_t i) {
+      while (m_sides[i] != i) i = m_sides[i] = m_sides[m_sides[i]];
+      return i;
+    };
+    for (std::size_t i = 0; i < m_star.size(); ++i) {
+      const std::size_t t = std::size_t(m_star[i].triangle);
+      for (int j = 0; j < 3; ++j) {
+        const int u = m_triangles[t].v[j], w = m_triangles[t].v[(j + 1) % 3];
+        if ((u != a && u != b && w != a && w != b) || is_seam_edge(t, u, w)) continue;
+        const int other = other_triangle(t, u, w);
+        for (std::size_t k = 0; k < m_star.size(); ++k)
+          if (m_star[k].triangle == other) m_sides[root(i)] = root(k);
+      }
+    }
+    for (std::size_t i = 0; i < m_star.size(); ++i) {
+      const std::size_t t = std::size_t(m_star[i].triangle);
+      if (contains(m_triangles[t], a) && contains(m_triangles[t], b)) continue;  // it goes
+      const int c = m_star[i].corner;
+      const std::size_t side = root(i);
+      const Values value = value_at(p, [&](std::size_t k) { return root(k) == side; });
+      const std::array<Values, 3>& old = m_corners[t];
+      const double before = Corners::uv_area(old[c], old[(c + 1) % 3], old[(c + 2) % 3]);
+      const double after = Corners::uv_area(value, old[(c + 1) % 3], old[(c + 2) % 3]);
+      if (std::isfinite(before) && before != 0 && !(before * after > 0)) return false;
+      m_planned.push_back({t, c, value});
+    }
+    return true;
+  }
+
+  // The corner values at the point closest to p of the star's triangles that `in_side` takes.
+  template <class In_side>
+  Values value_at(const Eigen::Vector3d& p, const In_side& in_side) const {
+    double best = std::numeric_limits<double>::infinity();
+    std::array<double, 3> weights{};
+    std::size_t best_triangle = 0;
+    for (std::size_t k = 0; k < m_star.size(); ++k) {
+      if (!in_side(k)) continue;
+      const std::size_t t = std::size_t(m_star[k].triangle);
+      const auto& v = m_triangles[t].v;
+      const Eigen::Vector3d &p0 = m_vertices[v[0]].data.point, &p1 = m_vertices[v[1]].data.point,
+                            &p2 = m_vertices[v[2]].data.point;
+      const Eigen::Vector3d w = closest_barycentric(p, p0, p1, p2);
+      const double distance = (w[0] * p0 + w[1] * p1 + w[2] * p2 - p).squaredNorm();
+      if (distance < best) {
+        best = distance;
+        weights = {w[0], w[1], w[2]};
+        best_triangle = t;
+      }
+    }
+    for (int k = 0; k < 3; ++k)
+      if (weights[k] == 1) return m_corners[best_triangle][k];  // at an old corner: exactly
+    return Corners::blend(m_corners[best_triangle], weights);
   }
 
   // Drops deleted triangles and rebuilds the reference lists (a counting sort).
   void compact() {
-    m_triangles.erase(std::remove_if(m_triangles.begin(), m_triangles.end(),
-                                     [](const Triangle& t) { return t.deleted; }),
-                      m_triangles.end());
+    std::size_t kept = 0;
+    for (std::size_t t = 0; t < m_triangles.size(); ++t) {
+      if (m_triangles[t].deleted) continue;
+      m_triangles[kept] = m_triangles[t];
+      if (carries_values()) {
+        m_corners[kept] = m_corners[t];
+        m_origins[kept] = m_origins[t];
+      }
+      ++kept;
+    }
+    m_triangles.resize(kept);
+    if (carries_values()) {
+      m_corners.resize(kept);
+      m_origins.resize(kept);
+    }
     for (Vertex& v : m_vertices) v.reference_count = 0;
     for (const Triangle& t : m_triangles)
       for (int v : t.v) ++m_vertices[v].reference_count;
@@ -380,6 +585,21 @@ class Fast_threshold_engine {
   std::vector<Triangle> m_triangles;
   std::vector<Reference> m_references;
   std::vector<std::pair<int, double>> m_star_errors;  // refresh_corner's, for one collapse
+  // With corner values (set_corner_values): per triangle, its values and its first index; per
+  // vertex, the seam edges at it (kUnknownSeams until asked); and one collapse's star, its sides
+  // and the new values.
+  static constexpr int kUnknownSeams = -1;
+  struct Planned_corner {
+    std::size_t triangle;
+    int corner;
+    Values values;
+  };
+  std::vector<std::array<Values, 3>> m_corners;
+  std::vector<int> m_origins;
+  std::vector<int> m_seam_counts;
+  std::vector<Reference> m_star;
+  std::vector<std::size_t> m_sides;
+  std::vector<Planned_corner> m_planned;
   std::vector<double> m_scratch;  // open_error_quantile's buffer, kept between passes
   std::vector<unsigned> m_mark;   // m_stamp where a vertex neighbours the edge being checked
   unsigned m_stamp = 0;
