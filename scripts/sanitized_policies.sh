@@ -9,7 +9,7 @@
 # mesh_error (default build): valid, no non-manifold vertex, no degenerate face, nothing to
 # repair when read back. Writes out/sanitized/results.tsv, a row per run, as it goes.
 # SANITIZED_MESHES="bunny.obj dragon.ply" runs only those meshes, SANITIZED_RUNS="attributes lt+fit"
-# only those runs (either appends to results.tsv). Outputs are OBJ files, so that a textured mesh
+# only those runs, SANITIZED_RATIOS="0.01" only those targets (any of them appends to results.tsv). Outputs are OBJ files, so that a textured mesh
 # carries its texture coordinates and normals through the run.
 set -uo pipefail
 cd "$(dirname "$0")/.."
@@ -29,11 +29,13 @@ bunny.obj:0.5,0.1,0.01 nefertiti.obj:0.1,0.01 dragon_res2.ply:0.1,0.01 dragon.pl
 runs=${SANITIZED_RUNS:-"gh gh-prob lt classic curvature fusion fast hausdorff attributes lt+fit gh+fit hausdorff+fit"}
 field() { grep -o "\"$1\": [^,}]*" "$2" | head -1 | awk '{print $2}' | tr -d '"'; }
 header=$(printf 'mesh\tratio\trun\texit\tsan_errors\tseconds\tstop_reason\tout_faces\tvalid\tnon_manifold\tdegenerate\treread_repairs')
-[ -n "${SANITIZED_MESHES:-}${SANITIZED_RUNS:-}" ] && [ -f $out/results.tsv ] || echo "$header" >$out/results.tsv
+[ -n "${SANITIZED_MESHES:-}${SANITIZED_RUNS:-}${SANITIZED_RATIOS:-}" ] && [ -f $out/results.tsv ] ||
+  echo "$header" >$out/results.tsv
 for c in $cases; do
   mesh=${c%%:*}
   [ -n "${SANITIZED_MESHES:-}" ] && [[ " $SANITIZED_MESHES " != *" $mesh "* ]] && continue
   for ratio in $(echo "${c#*:}" | tr ',' ' '); do
+    [ -n "${SANITIZED_RATIOS:-}" ] && [[ " $SANITIZED_RATIOS " != *" $ratio "* ]] && continue
     for run in $runs; do
       policy=${run%+fit}
       fit=""
