@@ -187,6 +187,35 @@ class Corner_attribute_carrier {
 
   bool is_seam_edge(Halfedge h) const { return m_attributes.is_seam_edge(*m_mesh, h); }
 
+  // The values at the point of `faces` closest to x: a corner's own values when that point is the
+  // corner, else the blend at its barycentric weights.
+  static Values values_nearest(const Mesh& mesh, const Attributes& attributes,
+                               const std::vector<Face>& faces, const Point& x) {
+    const auto eigen = [](const Point& q) { return Eigen::Vector3d(q.x(), q.y(), q.z()); };
+    double best = std::numeric_limits<double>::infinity();
+    std::array<double, 3> weights{};
+    std::array<Halfedge, 3> corners{};
+    for (const Face f : faces) {
+      const Halfedge h = mesh.halfedge(f);
+      const std::array<Halfedge, 3> around{h, mesh.next(h), mesh.prev(h)};
+      const std::array<Eigen::Vector3d, 3> p{eigen(mesh.point(mesh.target(around[0]))),
+                                             eigen(mesh.point(mesh.target(around[1]))),
+                                             eigen(mesh.point(mesh.target(around[2])))};
+      const Eigen::Vector3d w = internal::closest_barycentric(eigen(x), p[0], p[1], p[2]);
+      const double distance = (w[0] * p[0] + w[1] * p[1] + w[2] * p[2] - eigen(x)).squaredNorm();
+      if (distance < best) {
+        best = distance;
+        weights = {w[0], w[1], w[2]};
+        corners = around;
+      }
+    }
+    for (int k = 0; k < 3; ++k)
+      if (weights[k] == 1) return attributes.values(corners[k]);  // exactly
+    return Attributes::blend({attributes.values(corners[0]), attributes.values(corners[1]),
+                              attributes.values(corners[2])},
+                             weights);
+  }
+
   // Remembered per vertex (every collapse asks twice or more), and forgotten around each collapse
   // (collapsed()): only the edges at the kept vertex change.
   std::size_t seam_edges_at(Vertex v) const {
@@ -374,36 +403,10 @@ class Corner_attribute_carrier {
   template <class Root>
   Corner_value interpolated(const std::vector<Face>& star, std::size_t wanted, const Point& x,
                             Face face, Halfedge corner, const Root& root) const {
-    const Mesh& mesh = *m_mesh;
-    double best = std::numeric_limits<double>::infinity();
-    std::array<double, 3> weights{};
-    std::array<Halfedge, 3> corners{};
-    for (std::size_t i = 0; i < star.size(); ++i) {
-      if (root(i) != wanted) continue;
-      const Halfedge h = mesh.halfedge(star[i]);
-      const std::array<Halfedge, 3> around{h, mesh.next(h), mesh.prev(h)};
-      const std::array<Point, 3> p{mesh.point(mesh.target(around[0])),
-                                   mesh.point(mesh.target(around[1])),
-                                   mesh.point(mesh.target(around[2]))};
-      const auto eigen = [](const Point& q) { return Eigen::Vector3d(q.x(), q.y(), q.z()); };
-      const Eigen::Vector3d w =
-          internal::closest_barycentric(eigen(x), eigen(p[0]), eigen(p[1]), eigen(p[2]));
-      const Eigen::Vector3d closest = w[0] * eigen(p[0]) + w[1] * eigen(p[1]) + w[2] * eigen(p[2]);
-      const double distance = (closest - eigen(x)).squaredNorm();
-      if (distance < best) {
-        best = distance;
-        weights = {w[0], w[1], w[2]};
-        corners = around;
-      }
-    }
-    for (int k = 0; k < 3; ++k)
-      if (weights[k] == 1)  // at a corner of the old star: its values, exactly
-        return {face, corner, m_attributes.values(corners[k])};
-    const Values blended =
-        Attributes::blend({m_attributes.values(corners[0]), m_attributes.values(corners[1]),
-                           m_attributes.values(corners[2])},
-                          weights);
-    return {face, corner, blended};
+    std::vector<Face> side;
+    for (std::size_t i = 0; i < star.size(); ++i)
+      if (root(i) == wanted) side.push_back(star[i]);
+    return {face, corner, values_nearest(*m_mesh, m_attributes, side, x)};
   }
 
   Mesh* m_mesh;

@@ -31,6 +31,8 @@
 //   tolerance             >= 0, a fraction of the input's bounding-box diagonal; 0: unbounded
 // The input must outlive the fitter; output and input are triangle meshes of the same type, their
 // points read through their vertex_point maps. Deterministic: the same meshes give the same bytes.
+// fit() may be told which vertices must stay where they are (a mesh's texture seams, say;
+// docs/fitting.md, "Texture coordinates, normals and colours").
 // Usage:
 //   cgal_policies::Two_sided_fitter<Mesh> fitter(input);
 //   const cgal_policies::Two_sided_fit_report report = fitter.fit(simplified);
@@ -62,6 +64,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -111,12 +114,14 @@ class Two_sided_fitter {
     CGAL_precondition(options.min_input_samples >= 1);
   }
 
-  Two_sided_fit_report fit(TriangleMesh& output) {
+  // `pinned`, when given, names the vertices that do not move.
+  Two_sided_fit_report fit(TriangleMesh& output,
+                           const std::function<bool(vertex_descriptor)>& pinned = {}) {
     Two_sided_fit_report report;
     if (faces(output).empty()) return report;
     sample_input(num_faces(output));
     if (m_samples.empty()) return report;
-    Pass pass(output, *this);
+    Pass pass(output, *this, pinned);
     // Each round must lower the two-sided mean distance of the samples. One that does not is
     // undone, and the next round moves at most half as far; the second undone round in a row ends
     // the pass.
@@ -189,7 +194,8 @@ class Two_sided_fitter {
   // The state of one fit of one output mesh.
   class Pass {
    public:
-    Pass(TriangleMesh& tm, Two_sided_fitter& fitter)
+    Pass(TriangleMesh& tm, Two_sided_fitter& fitter,
+         const std::function<bool(vertex_descriptor)>& pinned)
         : m_tm(&tm),
           m_vpm(get(CGAL::vertex_point, tm)),
           m_fitter(&fitter),
@@ -199,6 +205,7 @@ class Two_sided_fitter {
       for (vertex_descriptor v : vertices(tm)) {
         put(m_vertex_index, v, std::uint32_t(m_vertices.size()));
         m_vertices.push_back(v);
+        m_pinned.push_back(pinned && pinned(v));
         m_points.push_back(internal::to_eigen(get(m_vpm, v)));
       }
       for (face_descriptor f : faces(tm)) {
@@ -497,7 +504,7 @@ class Two_sided_fitter {
           }
         }
       for (std::uint32_t v = 0; v < m_vertices.size(); ++v) {
-        if (edge_count[v] == 0) continue;
+        if (edge_count[v] == 0 || m_pinned[v]) continue;
         Vector3 step = solved.segment<3>(3 * Eigen::Index(v)) - m_points[v];
         const double limit = reach * m_options.trust_fraction * edge_sum[v] / edge_count[v];
         if (step.norm() > limit) step *= limit / step.norm();
@@ -670,6 +677,7 @@ class Two_sided_fitter {
     std::vector<face_descriptor> m_faces;
     std::vector<Vector3> m_points;
     std::vector<bool> m_off_curve;  // border vertices off the input's border curve
+    std::vector<bool> m_pinned;     // vertices fit() was told to leave where they are
     std::vector<Face_corners> m_corners, m_neighbours;
     std::optional<internal::Fit_guard> m_guard;
     std::vector<std::uint32_t> m_sample_face;

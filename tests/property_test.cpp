@@ -669,6 +669,42 @@ TEST(CarriedAttributes, ACubeWithSixChartsKeepsEveryChartWhole) {
   }
 }
 
+// The fitting pass on a textured mesh (docs/fitting.md): the seam vertices stay, no edge flips,
+// and each moved vertex takes the values where it went, so no texture triangle turns over and the
+// texture error stays near the simplification's while the geometric error drops.
+TEST(CarriedAttributes, FittingSpotKeepsItsSeamsAndItsTexture) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const Mesh input = apps::read_triangle_mesh(data_file("spot.obj"), nullptr,
+                                              apps::Corner_attribute_reading::keep);
+  Mesh mesh = input;
+  simplify(mesh, "lt", input.number_of_faces() / 10);
+  const Mesh simplified = mesh;
+  const apps::Fit_outcome fit = apps::fit_to_input(mesh, input, 4, 90, 0);
+  EXPECT_GT(fit.report.moves, 0u);
+  EXPECT_EQ(fit.report.flips, 0u);
+  Mesh seams_of = simplified;
+  const cgal_policies::Corner_attribute_carrier<Point> seams(seams_of);
+  const Attributes before(simplified), after(mesh);
+  ASSERT_TRUE(after.uvs);
+  std::size_t moved = 0;
+  for (const auto v : vertices(mesh)) {
+    if (seams.seam_edges_at(v) > 0) {
+      EXPECT_EQ(mesh.point(v), simplified.point(v)) << "seam vertex " << v << " moved";
+    }
+    moved += mesh.point(v) != simplified.point(v);
+  }
+  EXPECT_GT(moved, 0u);
+  for (const auto f : faces(mesh)) {
+    const double was = before.face_uv_area(simplified, f), now = after.face_uv_area(mesh, f);
+    EXPECT_TRUE(was == 0 || was * now > 0) << "face " << f << " turned over in the texture";
+  }
+  const auto uv_error = [&](const Mesh& m) {
+    return *apps::measure_attribute_error(input, m, 50000).uv_mean_rel;
+  };
+  EXPECT_LT(uv_error(mesh), 1.1 * uv_error(simplified));
+  EXPECT_LT(mean_error(input, mesh), mean_error(input, simplified));
+}
+
 TEST(CarriedAttributes, SpotKeepsItsSeamCornersAndTurnsNoTextureTriangleOver) {
   SKIP_IF_REAL_MESHES_ARE_OFF();
   const Mesh input = apps::read_triangle_mesh(data_file("spot.obj"), nullptr,
