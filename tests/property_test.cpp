@@ -159,15 +159,23 @@ INSTANTIATE_TEST_SUITE_P(RealMeshes, FitAfterAPolicy,
 
 class EveryPolicy : public testing::TestWithParam<std::string> {};
 
+// simplify() with the policy's error bound lifted (a tolerance of ten diagonals), so that only the
+// link condition and the policy's own checks stop it.
+apps::Simplify_outcome simplify_unbounded(Mesh& mesh, const std::string& policy,
+                                          std::size_t target) {
+  const apps::Policy_entry& entry = *apps::find_policy(policy);
+  apps::Simplify_settings settings = apps::default_settings(entry, target);
+  if (settings.options.count("tolerance")) settings.options["tolerance"] = 10;
+  const apps::Simplify_outcome outcome = entry.run(mesh, settings);
+  mesh.collect_garbage();
+  return outcome;
+}
+
 TEST_P(EveryPolicy, CollapsesAnIcosahedronToATetrahedronAtMost) {
   // With its error bound lifted (a tolerance of ten diagonals), every policy can go as far as the
   // link condition lets it: four faces.
   Mesh mesh = icosahedron();
-  const apps::Policy_entry& entry = *apps::find_policy(GetParam());
-  apps::Simplify_settings settings = apps::default_settings(entry, 0);
-  if (settings.options.count("tolerance")) settings.options["tolerance"] = 10;
-  const apps::Simplify_outcome outcome = entry.run(mesh, settings);
-  mesh.collect_garbage();
+  const apps::Simplify_outcome outcome = simplify_unbounded(mesh, GetParam(), 0);
   EXPECT_EQ(outcome.stop_reason, apps::Stop_reason::no_collapse_left);
   EXPECT_EQ(mesh.number_of_faces(), 4u);
   EXPECT_EQ(mesh.number_of_vertices(), 4u);
@@ -191,11 +199,7 @@ TEST_P(EveryPolicy, GoesOnPastAVertexWhoseFacesAllHaveZeroArea) {
   mesh.point(mesh.target(mesh.next(h))) = CGAL::midpoint(a, b);
   const Mesh::Halfedge_index split = CGAL::Euler::add_center_vertex(h, mesh);
   mesh.point(mesh.target(split)) = CGAL::barycenter(a, 3, b, 1);
-  const apps::Policy_entry& entry = *apps::find_policy(GetParam());
-  apps::Simplify_settings settings = apps::default_settings(entry, 20);
-  if (settings.options.count("tolerance")) settings.options["tolerance"] = 10;
-  const apps::Simplify_outcome outcome = entry.run(mesh, settings);
-  mesh.collect_garbage();
+  const apps::Simplify_outcome outcome = simplify_unbounded(mesh, GetParam(), 20);
   EXPECT_EQ(outcome.stop_reason, apps::Stop_reason::target_reached);
   EXPECT_EQ(mesh.number_of_faces(), 20u);
   EXPECT_TRUE(apps::check_mesh_validity(mesh).valid);
