@@ -21,8 +21,8 @@
 #define CGAL_POLICIES_CORNER_ATTRIBUTE_CARRIER_H
 
 #include <cgal_policies/Corner_attributes.h>
+#include <cgal_policies/internal/nearest_corner_values.h>
 #include <cgal_policies/internal/seam_collapse_rule.h>
-#include <cgal_policies/internal/triangle_closest_point.h>
 
 #include <CGAL/boost/graph/iterator.h>
 
@@ -192,28 +192,23 @@ class Corner_attribute_carrier {
   static Values values_nearest(const Mesh& mesh, const Attributes& attributes,
                                const std::vector<Face>& faces, const Point& x) {
     const auto eigen = [](const Point& q) { return Eigen::Vector3d(q.x(), q.y(), q.z()); };
-    double best = std::numeric_limits<double>::infinity();
-    std::array<double, 3> weights{};
-    std::array<Halfedge, 3> corners{};
-    for (const Face f : faces) {
-      const Halfedge h = mesh.halfedge(f);
-      const std::array<Halfedge, 3> around{h, mesh.next(h), mesh.prev(h)};
-      const std::array<Eigen::Vector3d, 3> p{eigen(mesh.point(mesh.target(around[0]))),
-                                             eigen(mesh.point(mesh.target(around[1]))),
-                                             eigen(mesh.point(mesh.target(around[2])))};
-      const Eigen::Vector3d w = internal::closest_barycentric(eigen(x), p[0], p[1], p[2]);
-      const double distance = (w[0] * p[0] + w[1] * p[1] + w[2] * p[2] - eigen(x)).squaredNorm();
-      if (distance < best) {
-        best = distance;
-        weights = {w[0], w[1], w[2]};
-        corners = around;
-      }
-    }
-    for (int k = 0; k < 3; ++k)
-      if (weights[k] == 1) return attributes.values(corners[k]);  // exactly
-    return Attributes::blend({attributes.values(corners[0]), attributes.values(corners[1]),
-                              attributes.values(corners[2])},
-                             weights);
+    const auto corners = [&](std::size_t k) {
+      const Halfedge h = mesh.halfedge(faces[k]);
+      return std::array<Halfedge, 3>{h, mesh.next(h), mesh.prev(h)};
+    };
+    const internal::Nearest_triangle_point nearest = internal::nearest_triangle_point(
+        eigen(x), faces.size(), [](std::size_t) { return true; },
+        [&](std::size_t k) {
+          const std::array<Halfedge, 3> c = corners(k);
+          return std::array<Eigen::Vector3d, 3>{eigen(mesh.point(mesh.target(c[0]))),
+                                                eigen(mesh.point(mesh.target(c[1]))),
+                                                eigen(mesh.point(mesh.target(c[2])))};
+        });
+    const std::array<Halfedge, 3> c = corners(nearest.triangle);
+    return internal::values_at_weights<Attributes>(
+        std::array<Values, 3>{attributes.values(c[0]), attributes.values(c[1]),
+                              attributes.values(c[2])},
+        nearest.weights);
   }
 
   // Remembered per vertex (every collapse asks twice or more), and forgotten around each collapse

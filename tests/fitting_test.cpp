@@ -1,15 +1,19 @@
-// The fitting pass (docs/fitting.md) on tiny meshes with exact expectations, and its guard.
+// The fitting pass (docs/fitting.md) on tiny meshes with exact expectations, its guard, and the
+// nearest-point reading of corner values that it shares with the attributes policy and fast.
 #include "test_meshes.h"
 
 #include <cgal_policies/Two_sided_fitter.h>
 #include <cgal_policies/internal/Border_curve.h>
 #include <cgal_policies/internal/Fit_guard.h>
+#include <cgal_policies/internal/nearest_corner_values.h>
 
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <cstddef>
 #include <vector>
 
 namespace {
@@ -267,6 +271,43 @@ TEST(BorderCurve, APointSlidesAlongItsOwnBorderAndNeverJumpsToTheNextOne) {
   // Within reach only its own edge: the corner of it; with more, along the next edge.
   EXPECT_EQ(curve.nearest_along({0.5, 0, 0}, {0, 0.5, 0}, 0.3), Eigen::Vector3d(0, 0, 0));
   EXPECT_EQ(curve.nearest_along({0.5, 0, 0}, {0, 0.5, 0}, 1.0), Eigen::Vector3d(0, 0.5, 0));
+}
+
+// Two unit right triangles in the plane z = 0, the second two units along x.
+std::array<Eigen::Vector3d, 3> plane_triangle(std::size_t k) {
+  const Eigen::Vector3d shift(2.0 * double(k), 0, 0);
+  return {Eigen::Vector3d(0, 0, 0) + shift, Eigen::Vector3d(1, 0, 0) + shift,
+          Eigen::Vector3d(0, 1, 0) + shift};
+}
+
+TEST(NearestTrianglePoint, TakesTheNearestOfTheTrianglesItIsAllowed) {
+  using cgal_policies::internal::nearest_triangle_point;
+  const Eigen::Vector3d p(2.25, 0.25, 1);  // above the inside of the second triangle
+  const auto all = nearest_triangle_point(
+      p, 2, [](std::size_t) { return true; }, plane_triangle);
+  EXPECT_EQ(all.triangle, 1u);
+  EXPECT_EQ(all.weights, (std::array<double, 3>{0.5, 0.25, 0.25}));
+  // Without the second, the first one's nearest point is its corner (1, 0, 0).
+  const auto first = nearest_triangle_point(
+      p, 2, [](std::size_t k) { return k == 0; }, plane_triangle);
+  EXPECT_EQ(first.triangle, 0u);
+  EXPECT_EQ(first.weights, (std::array<double, 3>{0, 1, 0}));
+}
+
+// Blends like a texture coordinate, and marks every blend with a tenth more, so that a test can
+// tell a blend from a corner's own value.
+struct Marked_blend {
+  static double blend(const std::array<double, 3>& corner, const std::array<double, 3>& w) {
+    return w[0] * corner[0] + w[1] * corner[1] + w[2] * corner[2] + 0.1;
+  }
+};
+
+TEST(ValuesAtWeights, ACornerKeepsItsOwnValueAndAnywhereElseBlends) {
+  using cgal_policies::internal::values_at_weights;
+  const std::array<double, 3> corner{1, 2, 4};
+  EXPECT_EQ(values_at_weights<Marked_blend>(corner, {0, 1, 0}), 2.0);
+  EXPECT_DOUBLE_EQ(values_at_weights<Marked_blend>(corner, {0.5, 0.25, 0.25}), 2.1);
+  EXPECT_DOUBLE_EQ(values_at_weights<Marked_blend>(corner, {0, 0.5, 0.5}), 3.1);
 }
 
 }  // namespace

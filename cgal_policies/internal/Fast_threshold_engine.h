@@ -4,9 +4,9 @@
 #define CGAL_POLICIES_INTERNAL_FAST_THRESHOLD_ENGINE_H
 
 #include <cgal_policies/internal/Quadric.h>
+#include <cgal_policies/internal/nearest_corner_values.h>
 #include <cgal_policies/internal/quadric_placement.h>
 #include <cgal_policies/internal/seam_collapse_rule.h>
-#include <cgal_policies/internal/triangle_closest_point.h>
 
 #include <CGAL/assertions.h>
 
@@ -525,26 +525,15 @@ class Fast_threshold_engine {
   // The corner values at the point closest to p of the star's triangles that `in_side` takes.
   template <class In_side>
   Values value_at(const Eigen::Vector3d& p, const In_side& in_side) const {
-    double best = std::numeric_limits<double>::infinity();
-    std::array<double, 3> weights{};
-    std::size_t best_triangle = 0;
-    for (std::size_t k = 0; k < m_star.size(); ++k) {
-      if (!in_side(k)) continue;
-      const std::size_t t = std::size_t(m_star[k].triangle);
-      const auto& v = m_triangles[t].v;
-      const Eigen::Vector3d &p0 = m_vertices[v[0]].data.point, &p1 = m_vertices[v[1]].data.point,
-                            &p2 = m_vertices[v[2]].data.point;
-      const Eigen::Vector3d w = closest_barycentric(p, p0, p1, p2);
-      const double distance = (w[0] * p0 + w[1] * p1 + w[2] * p2 - p).squaredNorm();
-      if (distance < best) {
-        best = distance;
-        weights = {w[0], w[1], w[2]};
-        best_triangle = t;
-      }
-    }
-    for (int k = 0; k < 3; ++k)
-      if (weights[k] == 1) return m_corners[best_triangle][k];  // at an old corner: exactly
-    return Corners::blend(m_corners[best_triangle], weights);
+    const auto triangle = [&](std::size_t k) { return std::size_t(m_star[k].triangle); };
+    const Nearest_triangle_point nearest =
+        nearest_triangle_point(p, m_star.size(), in_side, [&](std::size_t k) {
+          const auto& v = m_triangles[triangle(k)].v;
+          return std::array<Eigen::Vector3d, 3>{m_vertices[v[0]].data.point,
+                                                m_vertices[v[1]].data.point,
+                                                m_vertices[v[2]].data.point};
+        });
+    return values_at_weights<Corners>(m_corners[triangle(nearest.triangle)], nearest.weights);
   }
 
   // Drops deleted triangles and rebuilds the reference lists (a counting sort).
