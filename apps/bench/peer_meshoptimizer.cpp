@@ -34,10 +34,7 @@ Simplify_outcome run_meshoptimizer(Mesh& mesh, const Simplify_settings& settings
   Indexed_triangles result{input.points, {}};
   for (std::size_t i = 0; i + 2 < count; i += 3)
     result.triangles.push_back({output[i], output[i + 1], output[i + 2]});
-  mesh = to_mesh(result);
-  outcome.stop_reason = mesh.number_of_faces() <= settings.target_faces
-                            ? Stop_reason::target_reached
-                            : Stop_reason::no_collapse_left;
+  outcome.stop_reason = adopt_peer_result(result, settings.target_faces, mesh);
   return outcome;
 }
 

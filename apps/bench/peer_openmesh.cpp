@@ -55,10 +55,7 @@ Simplify_outcome run_openmesh(Mesh& mesh, const Simplify_settings& settings) {
     for (const auto v : f.vertices()) t[i++] = std::uint32_t(v.idx());
     result.triangles.push_back(t);
   }
-  mesh = to_mesh(result);
-  outcome.stop_reason = mesh.number_of_faces() <= settings.target_faces
-                            ? Stop_reason::target_reached
-                            : Stop_reason::no_collapse_left;
+  outcome.stop_reason = adopt_peer_result(result, settings.target_faces, mesh);
   return outcome;
 }
 
