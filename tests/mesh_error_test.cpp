@@ -58,6 +58,16 @@ TEST(MeshError, IdenticalMeshesAreAtDistanceZero) {
   EXPECT_EQ(e.samples, kSamples);
 }
 
+// A triangle whose last two corners are the same point: CGAL 5.5's projection onto it, with its
+// corners in this order, gives a corner for the middle point, half its length away (the fuzz
+// finding of fuzz/regressions/policies/evaluator_zero_area_triangle).
+TEST(MeshError, ATriangleWithTwoEqualCornersIsAtDistanceZeroFromItself) {
+  const Mesh sliver = from_triangles({{4, 8, 1}, {0, 0, 0}, {0, 0, 0}}, {{0, 1, 2}});
+  const apps::Mesh_error e = apps::measure_mesh_error(sliver, sliver, kSamples);
+  EXPECT_NEAR(e.bbox_diagonal, 9.0, 1e-12);
+  EXPECT_LE(e.hausdorff, 1e-12);
+}
+
 TEST(MeshError, ATranslatedCubeIsAtTheTranslationDistance) {
   // The back face of the cube lies exactly d behind the moved cube; nothing lies farther.
   const double d = 0.05;

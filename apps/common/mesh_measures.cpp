@@ -47,8 +47,35 @@ void for_each_index_in_parallel(std::size_t n, const Body& body) {
   for (std::thread& w : workers) w.join();
 }
 
+// CGAL 5.5's kernel projects a point onto a triangle with two equal corners wrongly for some corner
+// orders (fuzz/README.md). Such a triangle is the union of its edges, and is projected so here;
+// every other triangle as CGAL does.
+struct Distance_kernel : Kernel {
+  struct Construct_projected_point_3 : Kernel::Construct_projected_point_3 {
+    using Base = Kernel::Construct_projected_point_3;
+    using Base::operator();
+    Point operator()(const Kernel::Triangle_3& t, const Point& p) const {
+      if (!t.is_degenerate()) return Base::operator()(t, p);
+      Point nearest = t[0];
+      double best = CGAL::squared_distance(p, nearest);
+      for (int i = 0; i < 3; ++i) {
+        const Point q = Base::operator()(Kernel::Segment_3(t[i], t[(i + 1) % 3]), p);
+        const double d = CGAL::squared_distance(p, q);
+        if (d < best) {
+          best = d;
+          nearest = q;
+        }
+      }
+      return nearest;
+    }
+  };
+  Construct_projected_point_3 construct_projected_point_3_object() const { return {}; }
+};
+using Distance_tree = CGAL::AABB_tree<
+    CGAL::AABB_traits<Distance_kernel, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
+
 // Squared distances from points to the surface in the tree, computed on every core.
-std::vector<double> squared_distances(const std::vector<Point>& points, const Face_tree& tree) {
+std::vector<double> squared_distances(const std::vector<Point>& points, const Distance_tree& tree) {
   std::vector<double> result(points.size());
   for_each_index_in_parallel(points.size(),
                              [&](std::size_t i) { result[i] = tree.squared_distance(points[i]); });
@@ -94,7 +121,7 @@ One_sided one_sided_distance(const Mesh& from, const Mesh& to, std::size_t sampl
   const std::size_t face_samples = points.size();
   for (auto v : vertices(from)) points.push_back(from.point(v));
 
-  Face_tree tree(faces(to).first, faces(to).second, to);
+  Distance_tree tree(faces(to).first, faces(to).second, to);
   tree.accelerate_distance_queries();
   const std::vector<double> d2 = squared_distances(points, tree);
 
