@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <numeric>
 #include <set>
 #include <thread>
@@ -57,7 +58,7 @@ struct Distance_kernel : Kernel {
     Point operator()(const Kernel::Triangle_3& t, const Point& p) const {
       if (!t.is_degenerate()) return Base::operator()(t, p);
       Point nearest = t[0];
-      double best = CGAL::squared_distance(p, nearest);
+      double best = std::numeric_limits<double>::infinity();
       for (int i = 0; i < 3; ++i) {
         const Point q = Base::operator()(Kernel::Segment_3(t[i], t[(i + 1) % 3]), p);
         const double d = CGAL::squared_distance(p, q);
