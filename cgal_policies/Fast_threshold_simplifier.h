@@ -69,13 +69,10 @@ struct Fast_threshold_report {
 class Fast_threshold_simplifier {
  public:
   explicit Fast_threshold_simplifier(const Fast_threshold_options& options = {})
-      : m_border_weight(options.border_weight) {
+      : m_options(options) {
     CGAL_precondition(options.aggressiveness > 0);
     CGAL_precondition(options.max_normal_angle_deg >= 0 && options.max_normal_angle_deg <= 180);
     CGAL_precondition(options.border_weight >= 0);
-    m_settings.aggressiveness = options.aggressiveness;
-    m_settings.lossless = options.lossless;
-    m_settings.max_normal_angle_deg = options.max_normal_angle_deg;
   }
 
   // on_progress, when set, receives the face count after each pass.
@@ -112,8 +109,8 @@ class Fast_threshold_simplifier {
     Eigen::AlignedBox3d box;
     {
       auto quadrics = get(CGAL::dynamic_vertex_property_t<internal::Quadric>(), tm);
-      internal::accumulate_vertex_quadrics(tm, vpm, Face_weighting::unit, m_border_weight, quadrics,
-                                           quadrics);
+      internal::accumulate_vertex_quadrics(tm, vpm, Face_weighting::unit, m_options.border_weight,
+                                           quadrics, quadrics);
       auto index = get(CGAL::dynamic_vertex_property_t<int>(), tm);
       for (Vertex_descriptor v : vertices(tm)) {
         put(index, v, int(vertex_data.size()));
@@ -138,7 +135,7 @@ class Fast_threshold_simplifier {
                                                     diagonal);
     if constexpr (kCarries) engine.set_corner_values(std::move(corners));
     Fast_threshold_report report;
-    const auto outcome = engine.simplify(target_faces, m_settings, on_progress);
+    const auto outcome = engine.simplify(target_faces, m_options, on_progress);
     report.passes = outcome.passes;
     report.target_reached = outcome.target_reached;
 
@@ -175,8 +172,7 @@ class Fast_threshold_simplifier {
     return report;
   }
 
-  internal::Fast_threshold_settings m_settings;
-  double m_border_weight;
+  Fast_threshold_options m_options;
 };
 
 }  // namespace cgal_policies

@@ -3,6 +3,7 @@
 #ifndef CGAL_POLICIES_INTERNAL_FAST_THRESHOLD_ENGINE_H
 #define CGAL_POLICIES_INTERNAL_FAST_THRESHOLD_ENGINE_H
 
+#include <cgal_policies/Fast_threshold_options.h>
 #include <cgal_policies/internal/Quadric.h>
 #include <cgal_policies/internal/nearest_corner_values.h>
 #include <cgal_policies/internal/quadric_placement.h>
@@ -19,18 +20,12 @@
 #include <cstddef>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <utility>
 #include <vector>
 
 namespace cgal_policies {
 namespace internal {
-
-struct Fast_threshold_settings {
-  double aggressiveness = 7;  // a in t_k = 1e-9 (k + 3)^a D^2; larger is faster and coarser
-  bool lossless = false;      // only collapses whose error is zero up to round-off
-  double max_normal_angle_deg = 90;
-  std::size_t compaction_period = 5;  // passes between two rebuilds of the reference lists
-};
 
 struct Fast_threshold_vertex {
   Eigen::Vector3d point;
@@ -65,6 +60,8 @@ class Fast_threshold_engine {
   // Twice the area over the squared longest edge (sqrt(3)/2 when equilateral) below which a face
   // has no reliable normal: no collapse makes one, or a thinner one (docs/fast.md, "Sliver guard").
   static constexpr double kMinimumFaceShape = 1e-6;
+  // Passes between two rebuilds of the reference lists.
+  static constexpr std::size_t kCompactionPeriod = 5;
 
   // Precondition: every triangle has three distinct vertex indices in range.
   Fast_threshold_engine(std::vector<Fast_threshold_vertex> vertices,
@@ -97,79 +94,32 @@ class Fast_threshold_engine {
     bool target_reached = false;
   };
 
-  Outcome simplify(std::size_t target_faces, const Fast_threshold_settings& settings,
+  // Pass k collapses, in storage order and at most once per triangle, edges below its threshold
+  // and the level cap, until the target is reached or no allowed collapse is left.
+  Outcome simplify(std::size_t target_faces, const Fast_threshold_options& options,
                    const std::function<void(std::size_t)>& on_progress = {}) {
-    CGAL_precondition(settings.aggressiveness > 0 && settings.compaction_period > 0);
-    m_cos_max_angle = std::cos(settings.max_normal_angle_deg * (std::acos(-1.0) / 180.0));
-    if (carries_values()) compact();  // the seam tests walk the reference lists
-    for (std::size_t t = 0; t < m_triangles.size(); ++t) compute_errors(t);
+    CGAL_precondition(options.aggressiveness > 0);
+    m_options = options;
+    m_cos_max_angle = std::cos(options.max_normal_angle_deg * (std::acos(-1.0) / 180.0));
+    collect_errors();
 
     Outcome outcome;
     double k = 0;  // a double: empty passes are skipped by jumping k
-    for (std::size_t pass = 0;; ++pass) {
-      if (m_live_triangles <= target_faces) {
-        outcome.target_reached = true;
-        break;
-      }
-      if (pass % settings.compaction_period == 0) compact();
-      for (Triangle& t : m_triangles) t.dirty = false;
-      const double threshold =
-          settings.lossless
-              ? kLosslessTolerance * m_squared_diagonal
-              : kThresholdScale * std::pow(k + 3, settings.aggressiveness) * m_squared_diagonal;
-      const double level =
-          settings.lossless ? std::numeric_limits<double>::infinity() : open_error_quantile();
-
-      std::size_t collapses = 0;
-      bool held_back = false;  // some triangle below t_k waited for a higher level
-      double smallest_waiting = std::numeric_limits<double>::infinity();
-      const std::size_t count = m_triangles.size();  // triangles appended later are not new
-      for (std::size_t t = 0; t < count && m_live_triangles > target_faces; ++t) {
-        const Triangle& triangle = m_triangles[t];
-        if (triangle.deleted || triangle.dirty) continue;
-        if (!(triangle.min_error < threshold)) {
-          smallest_waiting = (std::min)(smallest_waiting, triangle.min_error);
-          continue;
-        }
-        if (!(triangle.min_error <= level)) {
-          held_back = true;
-          continue;
-        }
-        bool collapsed = false;
-        for (int j = 0; j < 3 && !collapsed; ++j) {
-          const double error = m_triangles[t].error[j];
-          collapsed = error < threshold && error <= level && try_collapse(t, j);
-        }
-        // try_collapse leaves t deleted or refuses: then t stays refused until it changes.
-        if (collapsed)
-          ++collapses;
-        else
-          m_triangles[t].refused = true;
-      }
+    for (std::size_t pass = 0; m_live_triangles > target_faces; ++pass) {
+      if (pass % kCompactionPeriod == 0) compact();  // the deleted triangles leave the lists
+      // The pass takes errors below t_k and the level cap: cheap edges first.
+      const Pass_result result = run_pass(threshold_of_pass(k), level_cap(), target_faces);
       outcome.passes = pass + 1;
       if (on_progress) on_progress(m_live_triangles);
-
-      if (collapses == 0 && !held_back) {
-        // Idle, nothing held back: jump to the first pass whose threshold exceeds the smallest
-        // waiting error, or stop if none waits. (Held back: the level rises, those tries refused.)
-        if (settings.lossless || !std::isfinite(smallest_waiting)) break;
-        k = (std::max)(k + 1,
-                       std::ceil(std::pow(smallest_waiting / (kThresholdScale * m_squared_diagonal),
-                                          1.0 / settings.aggressiveness)) -
-                           3);
-        while (kThresholdScale * std::pow(k + 3, settings.aggressiveness) * m_squared_diagonal <=
-               smallest_waiting)
-          k += 1;
-      } else {
-        k += 1;
-      }
+      // k + 1, or past the idle passes; none when nothing is left to wait for.
+      const std::optional<double> next = next_pass_index(k, result);
+      if (!next) break;
+      k = *next;
     }
     compact();
     outcome.target_reached = m_live_triangles <= target_faces;
     return outcome;
   }
-
-  std::size_t face_count() const { return m_live_triangles; }
 
   // With corner values: `corners` and `origins` (the constructor's index of each triangle) too.
   void extract(std::vector<Eigen::Vector3d>& points, std::vector<std::array<int, 3>>& triangles,
@@ -211,7 +161,86 @@ class Fast_threshold_engine {
     int corner;  // v's position in the triangle
   };
 
+  // What a pass did.
+  struct Pass_result {
+    std::size_t collapses = 0;
+    bool held_back = false;  // some triangle below t_k waited for a higher level
+    double smallest_waiting = std::numeric_limits<double>::infinity();  // of those not below t_k
+  };
+
   bool carries_values() const { return !m_corners.empty(); }
+
+  // Every triangle's edge errors, before the first pass.
+  void collect_errors() {
+    if (carries_values()) compact();  // the seam tests walk the reference lists
+    for (std::size_t t = 0; t < m_triangles.size(); ++t) compute_errors(t);
+  }
+
+  // t_k; in the lossless mode, round-off whatever k.
+  double threshold_of_pass(double k) const {
+    return m_options.lossless
+               ? kLosslessTolerance * m_squared_diagonal
+               : kThresholdScale * std::pow(k + 3, m_options.aggressiveness) * m_squared_diagonal;
+  }
+
+  // The kPassShare quantile of the open triangles' smallest errors; none in the lossless mode.
+  // Refused triangles are left out: cheap but blocked, they would hold the level down for good.
+  double level_cap() {
+    if (m_options.lossless) return std::numeric_limits<double>::infinity();
+    m_scratch.clear();
+    for (const Triangle& t : m_triangles)
+      if (!t.deleted && !t.refused) m_scratch.push_back(t.min_error);
+    if (m_scratch.empty()) return std::numeric_limits<double>::infinity();
+    const auto at = m_scratch.begin() + std::ptrdiff_t(kPassShare * double(m_scratch.size() - 1));
+    std::nth_element(m_scratch.begin(), at, m_scratch.end());
+    return *at;
+  }
+
+  // One pass over the triangles that no collapse of this pass touched, until the target is reached.
+  Pass_result run_pass(double threshold, double level, std::size_t target_faces) {
+    for (Triangle& t : m_triangles) t.dirty = false;
+    Pass_result result;
+    for (std::size_t t = 0; t < m_triangles.size() && m_live_triangles > target_faces; ++t) {
+      const Triangle& triangle = m_triangles[t];
+      if (triangle.deleted || triangle.dirty) continue;
+      if (!(triangle.min_error < threshold)) {
+        result.smallest_waiting = (std::min)(result.smallest_waiting, triangle.min_error);
+        continue;
+      }
+      if (!(triangle.min_error <= level)) {
+        result.held_back = true;
+        continue;
+      }
+      // try_collapse leaves t deleted or refuses: then t stays refused until it changes.
+      if (collapse_an_edge(t, threshold, level))
+        ++result.collapses;
+      else
+        m_triangles[t].refused = true;
+    }
+    return result;
+  }
+
+  // Tries t's edges below both bounds in order, up to the first that collapses.
+  bool collapse_an_edge(std::size_t t, double threshold, double level) {
+    for (int j = 0; j < 3; ++j) {
+      const double error = m_triangles[t].error[j];
+      if (error < threshold && error <= level && try_collapse(t, j)) return true;
+    }
+    return false;
+  }
+
+  // The k of the pass after pass k, or none: the passes are over.
+  std::optional<double> next_pass_index(double k, const Pass_result& pass) const {
+    if (pass.collapses > 0 || pass.held_back) return k + 1;
+    // Idle, nothing held back: jump to the first pass whose threshold exceeds the smallest
+    // waiting error, or stop if none waits. (Held back: the level rises, those tries refused.)
+    if (m_options.lossless || !std::isfinite(pass.smallest_waiting)) return std::nullopt;
+    const double relative = pass.smallest_waiting / (kThresholdScale * m_squared_diagonal);
+    double next =
+        (std::max)(k + 1, std::ceil(std::pow(relative, 1.0 / m_options.aggressiveness)) - 3);
+    while (threshold_of_pass(next) <= pass.smallest_waiting) next += 1;
+    return next;
+  }
 
   // The error of merging a and b, an edge of triangle `on`, and where the merged vertex goes. With
   // one end on the border, it stays at that end. With corner values the seam rules choose, and an
@@ -277,17 +306,6 @@ class Fast_threshold_engine {
     t.refused = false;
   }
 
-  // Refused triangles are left out: cheap but blocked, they would hold the level down for good.
-  double open_error_quantile() {
-    m_scratch.clear();
-    for (const Triangle& t : m_triangles)
-      if (!t.deleted && !t.refused) m_scratch.push_back(t.min_error);
-    if (m_scratch.empty()) return std::numeric_limits<double>::infinity();
-    const auto at = m_scratch.begin() + std::ptrdiff_t(kPassShare * double(m_scratch.size() - 1));
-    std::nth_element(m_scratch.begin(), at, m_scratch.end());
-    return *at;
-  }
-
   const Reference* references_begin(int v) const {
     return m_references.data() + m_vertices[v].first_reference;
   }
@@ -299,13 +317,19 @@ class Fast_threshold_engine {
     return t.v[0] == v || t.v[1] == v || t.v[2] == v;
   }
 
+  // A vertex's triangles that hold the first vertex opposite an edge, and those that hold both.
+  struct Opposite_counts {
+    int with_opposite = 0, with_both = 0;
+    void count(const Triangle& t, const int (&opposite)[2], bool border_edge) {
+      with_opposite += contains(t, opposite[0]);
+      with_both += !border_edge && contains(t, opposite[0]) && contains(t, opposite[1]);
+    }
+  };
+
   // The link condition [Dey99], borders closed by a virtual vertex as in CGAL's
   // Euler::does_satisfy_link_condition; also no emptied component, no faces glued back to back.
   bool satisfies_link_condition(int a, int b) {
-    if (++m_stamp == 0) {  // wrapped: clear the stale marks once
-      std::fill(m_mark.begin(), m_mark.end(), 0);
-      m_stamp = 1;
-    }
+    next_stamp();
     int opposite[2];
     int opposite_count = 0;
     for (const Reference* r = references_begin(b); r != references_end(b); ++r) {
@@ -323,28 +347,33 @@ class Fast_threshold_engine {
 
     // Mark a's neighbours; count a's triangles that hold an opposite vertex (2 unless the edge
     // from a to it is a border edge) or both opposite vertices (a tetrahedron corner).
-    int a_with_opposite = 0, a_with_both = 0;
+    Opposite_counts at_a, at_b;
     for (const Reference* r = references_begin(a); r != references_end(a); ++r) {
       const Triangle& t = m_triangles[r->triangle];
       if (t.deleted) continue;
       m_mark[t.v[(r->corner + 1) % 3]] = m_stamp;
       m_mark[t.v[(r->corner + 2) % 3]] = m_stamp;
-      a_with_opposite += contains(t, opposite[0]);
-      a_with_both += !border_edge && contains(t, opposite[0]) && contains(t, opposite[1]);
+      at_a.count(t, opposite, border_edge);
     }
-    int b_with_opposite = 0, b_with_both = 0;
     for (const Reference* r = references_begin(b); r != references_end(b); ++r) {
       const Triangle& t = m_triangles[r->triangle];
       if (t.deleted) continue;
       for (int w : {t.v[(r->corner + 1) % 3], t.v[(r->corner + 2) % 3]})
         if (w != a && m_mark[w] == m_stamp && w != opposite[0] && (border_edge || w != opposite[1]))
           return false;
-      b_with_opposite += contains(t, opposite[0]);
-      b_with_both += !border_edge && contains(t, opposite[0]) && contains(t, opposite[1]);
+      at_b.count(t, opposite, border_edge);
     }
     // A lone triangle: its three edges are border edges.
-    if (border_edge && a_with_opposite == 1 && b_with_opposite == 1) return false;
-    return !(a_with_both > 0 && b_with_both > 0);
+    if (border_edge && at_a.with_opposite == 1 && at_b.with_opposite == 1) return false;
+    return !(at_a.with_both > 0 && at_b.with_both > 0);
+  }
+
+  // A new m_stamp, which no vertex's mark holds yet.
+  void next_stamp() {
+    if (++m_stamp == 0) {  // wrapped: clear the stale marks once
+      std::fill(m_mark.begin(), m_mark.end(), 0);
+      m_stamp = 1;
+    }
   }
 
   static double shape(double twice_area, const Eigen::Vector3d& p, const Eigen::Vector3d& q1,
@@ -376,6 +405,7 @@ class Fast_threshold_engine {
     return false;
   }
 
+  // The collapse of t's edge from `corner`, unless a check refuses it.
   bool try_collapse(std::size_t triangle, int corner) {
     const int a = m_triangles[triangle].v[corner];
     const int b = m_triangles[triangle].v[(corner + 1) % 3];
@@ -386,6 +416,15 @@ class Fast_threshold_engine {
       return false;
     if (carries_values() && !plan_corner_values(a, b, p)) return false;
 
+    merge(a, b, p);
+    if (carries_values()) apply_planned_corner_values(a);
+    // Errors after the whole star is rewired: the seam tests look across its edges.
+    refresh_star_errors(a);
+    return true;
+  }
+
+  // b into a, which moves to p: the triangles on their edge go, a takes b's others.
+  void merge(int a, int b, const Eigen::Vector3d& p) {
     Vertex& va = m_vertices[a];
     Vertex& vb = m_vertices[b];
     va.data.point = p;
@@ -413,17 +452,20 @@ class Fast_threshold_engine {
     }
     va.first_reference = first;
     va.reference_count = int(m_references.size()) - first;
-    if (carries_values()) {
-      for (const Planned_corner& planned : m_planned)
-        m_corners[planned.triangle][planned.corner] = planned.values;
-      for (const Reference* r = references_begin(a); r != references_end(a); ++r)
-        for (int v : m_triangles[r->triangle].v) m_seam_counts[v] = kUnknownSeams;
-    }
-    // Errors after the whole star is rewired: the seam tests look across its edges.
+  }
+
+  // m_planned into the merged vertex a's corners; the seam counts around it are forgotten.
+  void apply_planned_corner_values(int a) {
+    for (const Planned_corner& planned : m_planned)
+      m_corners[planned.triangle][planned.corner] = planned.values;
+    for (const Reference* r = references_begin(a); r != references_end(a); ++r)
+      for (int v : m_triangles[r->triangle].v) m_seam_counts[v] = kUnknownSeams;
+  }
+
+  void refresh_star_errors(int a) {
     m_star_errors.clear();
     for (const Reference* r = references_begin(a); r != references_end(a); ++r)
       refresh_corner(std::size_t(r->triangle), r->corner);
-    return true;
   }
 
   // The triangle other than `t` on the edge of u and w, or -1 on a border.
@@ -485,34 +527,14 @@ class Fast_threshold_engine {
   // triangle would turn over or become flat.
   bool plan_corner_values(int a, int b, const Eigen::Vector3d& p) {
     m_planned.clear();
-    m_star.clear();
-    for (int v : {a, b})
-      for (const Reference* r = references_begin(v); r != references_end(v); ++r)
-        if (!m_triangles[r->triangle].deleted && (v == a || !contains(m_triangles[r->triangle], a)))
-          m_star.push_back(*r);
-    // The sides: triangles joined across the edges at a or b that are not seams.
-    m_sides.resize(m_star.size());
-    for (std::size_t i = 0; i < m_star.size(); ++i) m_sides[i] = i;
-    const auto root = [this](std::size_t i) {
-      while (m_sides[i] != i) i = m_sides[i] = m_sides[m_sides[i]];
-      return i;
-    };
-    for (std::size_t i = 0; i < m_star.size(); ++i) {
-      const std::size_t t = std::size_t(m_star[i].triangle);
-      for (int j = 0; j < 3; ++j) {
-        const int u = m_triangles[t].v[j], w = m_triangles[t].v[(j + 1) % 3];
-        if ((u != a && u != b && w != a && w != b) || is_seam_edge(t, u, w)) continue;
-        const int other = other_triangle(t, u, w);
-        for (std::size_t k = 0; k < m_star.size(); ++k)
-          if (m_star[k].triangle == other) m_sides[root(i)] = root(k);
-      }
-    }
+    collect_star(a, b);
+    join_sides(a, b);
     for (std::size_t i = 0; i < m_star.size(); ++i) {
       const std::size_t t = std::size_t(m_star[i].triangle);
       if (contains(m_triangles[t], a) && contains(m_triangles[t], b)) continue;  // it goes
       const int c = m_star[i].corner;
-      const std::size_t side = root(i);
-      const Values value = value_at(p, [&](std::size_t k) { return root(k) == side; });
+      const std::size_t side = side_of(i);
+      const Values value = value_at(p, [&](std::size_t k) { return side_of(k) == side; });
       const std::array<Values, 3>& old = m_corners[t];
       const double before = Corners::uv_area(old[c], old[(c + 1) % 3], old[(c + 2) % 3]);
       const double after = Corners::uv_area(value, old[(c + 1) % 3], old[(c + 2) % 3]);
@@ -520,6 +542,38 @@ class Fast_threshold_engine {
       m_planned.push_back({t, c, value});
     }
     return true;
+  }
+
+  // m_star: a's live triangles, then b's others.
+  void collect_star(int a, int b) {
+    m_star.clear();
+    for (int v : {a, b})
+      for (const Reference* r = references_begin(v); r != references_end(v); ++r)
+        if (!m_triangles[r->triangle].deleted && (v == a || !contains(m_triangles[r->triangle], a)))
+          m_star.push_back(*r);
+  }
+
+  // The sides: triangles joined across the edges at a or b that are not seams, as sets of
+  // m_star's indices in m_sides.
+  void join_sides(int a, int b) {
+    m_sides.resize(m_star.size());
+    for (std::size_t i = 0; i < m_star.size(); ++i) m_sides[i] = i;
+    for (std::size_t i = 0; i < m_star.size(); ++i) {
+      const std::size_t t = std::size_t(m_star[i].triangle);
+      for (int j = 0; j < 3; ++j) {
+        const int u = m_triangles[t].v[j], w = m_triangles[t].v[(j + 1) % 3];
+        if ((u != a && u != b && w != a && w != b) || is_seam_edge(t, u, w)) continue;
+        const int other = other_triangle(t, u, w);
+        for (std::size_t k = 0; k < m_star.size(); ++k)
+          if (m_star[k].triangle == other) m_sides[side_of(i)] = side_of(k);
+      }
+    }
+  }
+
+  // The representative of m_star[i]'s side.
+  std::size_t side_of(std::size_t i) {
+    while (m_sides[i] != i) i = m_sides[i] = m_sides[m_sides[i]];
+    return i;
   }
 
   // The corner values at the point closest to p of the star's triangles that `in_side` takes.
@@ -589,11 +643,12 @@ class Fast_threshold_engine {
   std::vector<Reference> m_star;
   std::vector<std::size_t> m_sides;
   std::vector<Planned_corner> m_planned;
-  std::vector<double> m_scratch;  // open_error_quantile's buffer, kept between passes
+  std::vector<double> m_scratch;  // level_cap's buffer, kept between passes
   std::vector<unsigned> m_mark;   // m_stamp where a vertex neighbours the edge being checked
   unsigned m_stamp = 0;
   std::size_t m_live_triangles = 0;
   double m_squared_diagonal;
+  Fast_threshold_options m_options;  // simplify()'s
   double m_cos_max_angle = 0;
 };
 
