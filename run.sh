@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# ./run.sh demo | test | build — installs what is missing, builds (Release, in build/), then runs.
+# ./run.sh demo | test | build | install PREFIX | install-headers PREFIX — installs what is
+# missing, builds (Release, in build/), then runs or installs.
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -10,9 +11,11 @@ required=(g++ make cmake libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmp
 optional=(libmeshoptimizer-dev libopenmesh-dev gnuplot-nox pkg-config libglfw3-dev libimgui-dev libosmesa6-dev libgl-dev
           libstb-dev)
 
+# Installs the given packages that are missing (default: both lists).
 install_missing() {
-  local missing=() package
-  for package in "${required[@]}" "${optional[@]}"; do
+  local missing=() package wanted=("$@")
+  [ ${#wanted[@]} -eq 0 ] && wanted=("${required[@]}" "${optional[@]}")
+  for package in "${wanted[@]}"; do
     dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "ok installed" || missing+=("$package")
   done
   [ ${#missing[@]} -eq 0 ] && return
@@ -32,19 +35,34 @@ build() {
   cmake --build build -j "$(nproc)" "${targets[@]}" >&2
 }
 
+# The demo's best result of this suite: the lowest mean error (both directions) among the rows
+# that are not CGAL's policies run alone nor a peer's, as "policy fit" (fit: yes or no).
+best_of_ours() {
+  awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; next }
+    { name = $col["policy"]; base = name; sub(/\+fit$/, "", base)
+      if (name == base && (base == "gh" || base == "gh-prob" || base == "lt")) next
+      if (base == "gh-envelope" || base == "meshopt" || base == "openmesh") next
+      error = ($col["mean_a_to_b_rel"] + $col["mean_b_to_a_rel"]) / 2
+      if (best == "" || error < best_error) { best = base " " (name == base ? "no" : "yes"); best_error = error } }
+    END { print best }' "$1"
+}
+
 case "${1:-}" in
   demo)
     # Only what the demo runs: the benchmark, and simplify for the picture.
     build simplify simplify_bench
     mkdir -p out/demo
-    # Every policy of the suite beside CGAL's own, on the shipped cow at 10% of its faces: the
-    # table (time against gh, two-sided errors, validity) ...
-    build/bin/simplify_bench --mesh data/cow.obj --ratios 0.1 --out out/demo \
-      --policies gh,gh-prob,lt,classic,curvature,fusion,fast,hausdorff,attributes
-    # ... and the input beside the output of the Hausdorff-bounded policy, drawn offscreen.
-    if build/bin/simplify data/cow.obj out/demo/cow_hausdorff.obj 0.1 --policy hausdorff \
-         --measure --snapshot out/demo/cow_hausdorff.png --quiet --force; then
-      echo "demo: table in out/demo/report.md, picture in out/demo/cow_hausdorff.png" >&2
+    # Every policy of the suite, each also followed by the fitting pass, beside CGAL's own and the
+    # peers built in, on the shipped cow at 10% of its faces: the table (time against gh, two-sided
+    # errors, validity) and its summary, which names the lowest mean error ...
+    build/bin/simplify_bench --mesh data/cow.obj --ratios 0.1 --fit --out out/demo
+    # ... and the input beside the best result of this suite's pipelines, drawn offscreen.
+    read -r best fit <<<"$(best_of_ours out/demo/runs.csv)"
+    fit_option=()
+    [ "$fit" = yes ] && fit_option=(--fit)
+    if build/bin/simplify data/cow.obj out/demo/cow_best.obj 0.1 --policy "$best" \
+         "${fit_option[@]}" --measure --snapshot out/demo/cow_best.png --quiet --force; then
+      echo "demo: table in out/demo/report.md, our best ($best, fit: $fit) in out/demo/cow_best.png" >&2
     else
       echo "demo: table in out/demo/report.md (no picture: this build has no OpenGL viewer)" >&2
     fi
@@ -56,8 +74,21 @@ case "${1:-}" in
   build)
     build
     ;;
+  install)
+    # The library and the io target (find_package(cgal_policies COMPONENTS io)).
+    [ $# -eq 2 ] || { echo "usage: ./run.sh install PREFIX" >&2; exit 2; }
+    build cgal_policies_io
+    cmake --install build --prefix "$2" >&2
+    ;;
+  install-headers)
+    # The header-only library alone: CGAL and Eigen are all it needs.
+    [ $# -eq 2 ] || { echo "usage: ./run.sh install-headers PREFIX" >&2; exit 2; }
+    install_missing g++ make cmake libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev
+    cmake -S . -B build-headers -DCGAL_POLICIES_BUILD_APPS=OFF >&2
+    cmake --install build-headers --prefix "$2" >&2
+    ;;
   *)
-    echo "usage: ./run.sh demo|test|build" >&2
+    echo "usage: ./run.sh demo|test|build|install PREFIX|install-headers PREFIX" >&2
     exit 2
     ;;
 esac

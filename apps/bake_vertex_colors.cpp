@@ -1,11 +1,13 @@
 // bake_vertex_colors IN OUT: a mesh coloured per vertex from its texture, to test and measure
 // colour carrying on real data (docs/attributes.md). Each vertex takes the mean of its texture's
 // colour at its corners' coordinates, so the colours have no seams even where the texture does.
-#include "common/App_error.h"
-#include "common/Command_line.h"
-#include "common/app_main.h"
-#include "common/material_texture.h"
-#include "common/mesh_io.h"
+#include "app_types.h"
+#include "cli/App_error.h"
+#include "cli/Command_line.h"
+#include "cli/app_main.h"
+#include "cli/output_path.h"
+#include "io/material_texture.h"
+#include "io/mesh_io.h"
 #include "viewer/Texture_image.h"
 
 #include <cgal_policies/Corner_attributes.h>
@@ -45,11 +47,13 @@ int run(int argc, char** argv) {
   Read_report report;
   Mesh mesh = read_triangle_mesh(input, &report, Corner_attribute_reading::keep);
   const Attributes textured(mesh);
-  if (!textured.uvs) throw App_error(exit_bad_input, input + ": no texture coordinates");
+  if (!textured.uvs)
+    throw Io_error(Io_error::Kind::unreadable_input, input + ": no texture coordinates");
   const std::optional<std::string> texture_file =
       texture_option ? texture_option : diffuse_texture_file(report.materials);
   if (!texture_file)
-    throw App_error(exit_bad_input, input + ": no material with a diffuse map (give --texture)");
+    throw Io_error(Io_error::Kind::unreadable_input,
+                   input + ": no material with a diffuse map (give --texture)");
   const Texture_image texture = Texture_image::load(*texture_file);
 
   std::vector<Attributes::Color> colors(mesh.number_of_vertices());

@@ -10,12 +10,14 @@
 // - mean_normal_angle_deg: at points sampled on INPUT (fixed seed), the mean angle between INPUT's
 //   face normal and the normal of the nearest face of the simplification; also over the samples of
 //   the curved quarter and of the rest.
-#include "common/App_error.h"
-#include "common/Command_line.h"
-#include "common/Json_object.h"
-#include "common/app_main.h"
-#include "common/mesh_io.h"
-#include "common/mesh_measures.h"
+#include "cli/App_error.h"
+#include "cli/Command_line.h"
+#include "cli/Json_object.h"
+#include "cli/app_main.h"
+#include "evaluation/attribute_error.h"
+#include "evaluation/mesh_validity.h"
+#include "evaluation/surface_error.h"
+#include "io/mesh_io.h"
 
 #include <cgal_policies/internal/approximate_curvature.h>
 #include <cgal_policies/internal/mesh_geometry.h>

@@ -1,12 +1,15 @@
 // mesh_error A B: Metro-style two-sided distances between two meshes (docs/evaluation.md), A being
 // the reference, the validity figures of B and, with --attributes, the error of B's texture
 // coordinates, normals and colours.
-#include "common/App_error.h"
-#include "common/Command_line.h"
-#include "common/Json_object.h"
-#include "common/app_main.h"
-#include "common/mesh_io.h"
-#include "common/mesh_measures.h"
+#include "cli/App_error.h"
+#include "cli/Command_line.h"
+#include "cli/Json_object.h"
+#include "cli/app_main.h"
+#include "cli/report_fields.h"
+#include "evaluation/attribute_error.h"
+#include "evaluation/mesh_validity.h"
+#include "evaluation/surface_error.h"
+#include "io/mesh_io.h"
 
 #include <cmath>
 #include <cstdio>

@@ -1,31 +1,29 @@
-// simplify IN OUT [RATIO]: simplifies a mesh with any policy of the suite (see README.md).
-#include "common/App_error.h"
-#include "common/Command_line.h"
-#include "common/Json_object.h"
-#include "common/Progress_bar.h"
-#include "common/Removed_on_interrupt.h"
-#include "common/Stopwatch.h"
-#include "common/app_main.h"
-#include "common/atomic_write.h"
-#include "common/fitting.h"
-#include "common/mesh_io.h"
-#include "common/mesh_measures.h"
-#include "common/peak_memory.h"
-#include "common/policy_registry.h"
-#include "common/simplify_request.h"
-#include "common/small_components.h"
-#include "common/smoothing.h"
+// simplify IN OUT [RATIO]: simplifies a mesh with the suite's pipeline (README.md, docs/cli.md).
+#include "cli/App_error.h"
+#include "cli/Command_line.h"
+#include "cli/Json_object.h"
+#include "cli/Progress_bar.h"
+#include "cli/Snapshot_renderer.h"
+#include "cli/Stopwatch.h"
+#include "cli/app_main.h"
+#include "cli/pass_options.h"
+#include "cli/peak_memory.h"
+#include "cli/report_fields.h"
+#include "cli/simplify_request.h"
+#include "evaluation/attribute_error.h"
+#include "evaluation/mesh_validity.h"
+#include "evaluation/surface_error.h"
+#include "io/Removed_on_interrupt.h"
+#include "io/atomic_write.h"
+#include "io/mesh_io.h"
+#include "pipeline/Pipeline.h"
 
-#include <cgal_policies/Border_pair_contraction.h>
 #include <cgal_policies/Corner_attributes.h>
-
-#ifdef CGAL_POLICIES_WITH_VIEWER
-#include "snapshot.h"
-#endif
 
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <stdexcept>
 
 namespace apps {
 namespace {
@@ -41,7 +39,10 @@ void print_help() {
          "  --faces N             keep N faces instead\n"
          "  --policy NAME         "
       << policy_names()
-      << " (default classic)\n"
+      << " (default: the default pipeline,\n"
+         "                        "
+      << pipeline_name(cgal_policies::Simplification_options())
+      << "; naming a policy runs it alone)\n"
          "  --max-normal-angle A  our policies refuse collapses that turn a face normal by\n"
          "                        more than A degrees (default 90)\n"
          "  --max-error X         also stop before the output's two-sided Hausdorff distance\n"
@@ -68,18 +69,15 @@ void print_help() {
          "                        without a window; all or nothing: when the picture fails,\n"
          "                        OUT is not written (exit 4, or 1 without OpenGL); when\n"
          "                        OUT is an OBJ, a textured IN is drawn with its texture\n"
-         "                        (map_Kd; exit 3 when that file is missing)"
-#ifndef CGAL_POLICIES_WITH_VIEWER
-         "\n                        (not in this build: mesh_viewer's packages were missing)"
-#endif
-         "\n"
+         "                        (map_Kd; exit 3 when that file is missing); needs a build\n"
+         "                        with mesh_viewer's packages\n"
          "  --size WxH            the snapshot's size in pixels (default 1600x800)\n"
          "  --force               allow OUT to be the same file as IN\n"
          "  --quiet               no progress bar, no summary\n"
          "  --help                this text\n\n"
          "Policy options (all lengths are fractions of IN's bounding-box diagonal):\n";
   for (const Policy_entry& p : policy_registry())
-    std::cout << "  " << p.name << ": " << p.summary << '\n' << policy_options_help(p);
+    std::cout << "  " << p.name << ": " << p.summary << '\n' << options_help(p.options);
   std::cout << "\nExit codes: 0 done, 1 not done, 2 bad usage, 3 bad input, 4 output not written,\n"
                "130 or 143 interrupted by SIGINT or SIGTERM (OUT is then never half-written).\n";
 }
@@ -89,9 +87,7 @@ void print_help() {
 // neither new file, and an OUT that existed before is only replaced once the picture exists.
 struct Snapshot_request {
   std::string png;
-#ifdef CGAL_POLICIES_WITH_VIEWER
-  Snapshot_settings settings;
-#endif
+  std::unique_ptr<Snapshot_renderer> renderer;
 };
 
 std::optional<Snapshot_request> take_snapshot_options(Command_line& cli) {
@@ -99,33 +95,26 @@ std::optional<Snapshot_request> take_snapshot_options(Command_line& cli) {
   const std::optional<std::string> size = cli.take_value("size");
   if (size && !png) throw App_error(exit_usage, "--size goes with --snapshot");
   if (!png) return std::nullopt;
-#ifdef CGAL_POLICIES_WITH_VIEWER
+  const auto [width, height] = size ? parse_picture_size(*size) : std::pair<int, int>(1600, 800);
+  Snapshot_request request{*png, make_snapshot_renderer(width, height)};
+  if (!request.renderer)
+    throw App_error(exit_usage, *png +
+                                    ": --snapshot is not in this build (mesh_viewer's packages "
+                                    "were missing when it was configured)");
   // A .png is never a mesh, so never IN or OUT.
   if (std::filesystem::path(*png).extension() != ".png")
     throw App_error(exit_usage, *png + ": the snapshot must be a .png file");
   check_output_folder(*png);
-  Snapshot_request request{*png, {}};
-  if (size) parse_snapshot_size(*size, request.settings);
   return request;
-#else
-  throw App_error(exit_usage, *png +
-                                  ": --snapshot is not in this build (mesh_viewer's packages "
-                                  "were missing when it was configured)");
-#endif
 }
 
-// Without the viewer, take_snapshot_options refuses every picture: only the mesh is written.
-void write_mesh_and_snapshot([[maybe_unused]] const Mesh& original, const Mesh& simplified,
-                             [[maybe_unused]] const std::string& policy_name,
-                             [[maybe_unused]] const std::optional<Snapshot_request>& snapshot,
+void write_mesh_and_snapshot(const Mesh& original, const Mesh& simplified, const std::string& name,
+                             const std::optional<Snapshot_request>& snapshot,
                              const std::string& output, const Material_references& materials) {
-#ifdef CGAL_POLICIES_WITH_VIEWER
   // An interrupt before OUT is in place removes the new picture too.
   std::optional<Removed_on_interrupt> picture_without_mesh;
   if (snapshot) {
-    Snapshot_settings settings = snapshot->settings;
-    caption_snapshot(original, simplified, policy_name, settings);
-    write_snapshot(original, simplified, settings, snapshot->png);
+    snapshot->renderer->write(original, simplified, name, snapshot->png);
     picture_without_mesh.emplace(snapshot->png);
   }
   try {
@@ -135,12 +124,55 @@ void write_mesh_and_snapshot([[maybe_unused]] const Mesh& original, const Mesh& 
     if (snapshot) std::filesystem::remove(snapshot->png, ignored);
     throw;
   }
-#else
-  write_mesh_atomically(simplified, output, materials);
-#endif
 }
 
-using Attributes = cgal_policies::Corner_attributes<Point>;
+void add_report_fields(Json_object& report, const cgal_policies::Simplification_report& run,
+                       const Simplify_request& request) {
+  using cgal_policies::Simplification_pass;
+  const cgal_policies::Simplification_options& options = request.options;
+  const double seconds = run.seconds(Simplification_pass::simplification);
+  report.add("input_faces", run.input_faces);
+  report.add("input_vertices", run.input_vertices);
+  report.add("target_faces", run.target_faces);
+  report.add("output_faces", run.output_faces);
+  report.add("output_vertices", run.output_vertices);
+  report.add("seconds", seconds);
+  report.add("total_seconds", run.total_seconds());  // every pass of the pipeline
+  report.add("faces_removed_per_second",
+             seconds > 0 ? (run.input_faces - run.output_faces) / seconds : 0.0);
+  report.add("stop_reason", to_string(run.stop_reason));
+  // Signed: dropping a last piece may overshoot the target.
+  report.add("target_gap_faces",
+             static_cast<long long>(run.output_faces) - static_cast<long long>(run.target_faces));
+  report.add("time_limit_seconds", options.time_limit_seconds);
+  report.add("min_component", options.min_component);
+  report.add("dropped_components", run.dropped_before.components);
+  report.add("dropped_component_faces", run.dropped_before.faces);
+  report.add("drop_small_pieces", options.drop_small_pieces);
+  report.add("vanished_components", run.dropped_after.components);
+  report.add("vanished_faces", run.dropped_after.faces);
+  report.add("max_error", options.max_error);
+  report.add("smooth_iterations", options.smoothing.iterations);
+  report.add("smooth_refused_moves", run.smoothing_refused_moves);
+  report.add("smooth_seconds", run.seconds(Simplification_pass::smoothing));
+  report.add("fit", options.fit);
+  if (run.fitted) {
+    report.add("fit_seconds", run.seconds(Simplification_pass::fit));
+    report.add("fit_rounds", run.fit.rounds);
+    report.add("fit_moves", run.fit.moves);
+    report.add("fit_refused_moves", run.fit.refused_moves);
+    report.add("fit_flips", run.fit.flips);
+    report.add("fit_refused_flips", run.fit.refused_flips);
+  }
+  report.add("merge_distance", options.merge_distance);
+  report.add("merged_pairs", run.merged.merged_pairs);
+  report.add("stitched_edges", run.merged.stitched_edges);
+  report.add("refused_pairs", run.merged.refused_pairs);
+  for (const auto& [reason, count] : run.merged.refused_by_reason)
+    report.add("refused_pairs_" + reason, count);
+  for (const Policy_option& o : request.policy->options)
+    report.add("option_" + o.name, o.get(options));
+}
 
 int run(int argc, char** argv) {
   Command_line cli(argc, argv);
@@ -148,14 +180,10 @@ int run(int argc, char** argv) {
     print_help();
     return exit_success;
   }
-  std::optional<Snapshot_request> snapshot = take_snapshot_options(cli);
+  const std::optional<Snapshot_request> snapshot = take_snapshot_options(cli);
   Simplify_request request = take_simplify_request(cli);
-  const Policy_entry* policy = request.choice.policy;
-  Simplify_settings& settings = request.choice.settings;
   const std::string& input = request.input;
   const std::string& output = request.output;
-  const Smoothing_request& smoothing = request.smoothing;
-  const Fit_request& fit = request.fit;
   const bool quiet = request.quiet, measure = request.measure;
 
   Read_report read_report;
@@ -168,90 +196,39 @@ int run(int argc, char** argv) {
   if (!quiet)
     for (const std::string& repair : read_report.repairs)
       std::cerr << "simplify: " << input << ": " << repair << '\n';
-#ifdef CGAL_POLICIES_WITH_VIEWER
   // Before any work: a texture the picture needs and cannot read is bad input.
-  if (snapshot) snapshot->settings.texture = texture_to_draw(mesh, read_report.materials);
-#endif
+  if (snapshot) snapshot->renderer->prepare(mesh, read_report.materials);
+  const bool input_had_corner_values =
+      cgal_policies::Corner_attributes<Point>(mesh).any_corner_values();
   const std::size_t input_faces = mesh.number_of_faces();
-  const std::size_t input_vertices = mesh.number_of_vertices();
-  settings.target_faces = request.target.of(input_faces);
-  const Mesh original = measure || smoothing.bounded || snapshot || fit.enabled ? mesh : Mesh();
-  // The pre-pass (docs/quadric_core.md, pair contraction) is not part of the simplification's time.
-  const cgal_policies::Border_pair_contraction_report merge_report =
-      cgal_policies::Border_pair_contraction(request.merge_distance)(mesh);
-  if (merge_report.stitched_edges > 0) mesh.collect_garbage();
-  const Dropped_components specks = drop_components_smaller_than(mesh, request.min_component);
-
-  const bool input_had_corner_values = Attributes(mesh).any_corner_values();
-  Simplify_outcome outcome;
+  const cgal_policies::Simplification_options& options = request.options;
+  const Mesh original =
+      measure || snapshot || options.fit || options.smoothing.bounded ? mesh : Mesh();
+  cgal_policies::Simplification_report run;
   {
-    Progress_bar bar(input_faces, settings.target_faces, !quiet);
-    settings.on_progress = [&bar](std::size_t now) { bar.update(now); };
-    outcome = policy->run(mesh, settings);
+    Progress_bar bar(input_faces, options.target.of(input_faces), !quiet);
+    cgal_policies::Simplification_options with_bar = options;
+    with_bar.progress = [&bar](cgal_policies::Simplification_pass pass, double, std::size_t faces) {
+      if (pass == cgal_policies::Simplification_pass::simplification) bar.update(faces);
+    };
+    run = Pipeline(with_bar).run(mesh, original);
   }
-  mesh.collect_garbage();
-  const char* attributes = corner_attributes_word(input_had_corner_values, outcome);
-  const Dropped_components vanished =
-      request.drop_small_pieces && outcome.stop_reason == Stop_reason::no_collapse_left
-          ? drop_smallest_components_until(mesh, settings.target_faces)
-          : Dropped_components();
-  const std::size_t refused_smoothing_moves = smooth_mesh(mesh, original, smoothing, request.bound);
-  // After smoothing, so that the output the user gets is the fitted one.
-  const Fit_outcome fitted =
-      fit.enabled
-          ? fit_to_input(mesh, original, fit.rounds, settings.max_normal_angle_deg, request.bound)
-          : Fit_outcome();
+  const std::string name = pipeline_name(options);
   const Stopwatch writing;
-  write_mesh_and_snapshot(original, mesh, policy->name, snapshot, output, read_report.materials);
+  write_mesh_and_snapshot(original, mesh, name, snapshot, output, read_report.materials);
   const double write_seconds = writing.seconds();
 
-  const std::size_t removed = input_faces - mesh.number_of_faces();
   Json_object report;
-  report.add("policy", policy->name);
+  report.add("policy", request.policy->name);
   report.add("input", input);
   report.add("output", output);
-  report.add("input_faces", input_faces);
-  report.add("input_vertices", input_vertices);
-  report.add("target_faces", settings.target_faces);
-  report.add("output_faces", mesh.number_of_faces());
-  report.add("output_vertices", mesh.number_of_vertices());
-  report.add("seconds", outcome.seconds);
+  add_report_fields(report, run, request);
   report.add("read_seconds", read_seconds);    // reading and repairing IN
   report.add("write_seconds", write_seconds);  // writing OUT (and the snapshot, when asked)
-  report.add("faces_removed_per_second", outcome.seconds > 0 ? removed / outcome.seconds : 0.0);
   report.add("peak_memory_mib", peak_rss_mib());
-  report.add("stop_reason", to_string(outcome.stop_reason));
-  // Signed: dropping a last piece may overshoot the target.
-  report.add("target_gap_faces", static_cast<long long>(mesh.number_of_faces()) -
-                                     static_cast<long long>(settings.target_faces));
-  report.add("time_limit_seconds", settings.time_limit_seconds);
-  report.add("min_component", request.min_component);
-  report.add("dropped_components", specks.components);
-  report.add("dropped_component_faces", specks.faces);
-  report.add("drop_small_pieces", request.drop_small_pieces);
-  report.add("vanished_components", vanished.components);
-  report.add("vanished_faces", vanished.faces);
-  report.add("max_error", settings.max_error);
   if (snapshot) report.add("snapshot", snapshot->png);
-  report.add("smooth_iterations", smoothing.iterations);
-  report.add("smooth_refused_moves", refused_smoothing_moves);
-  if (fit.enabled) {
-    report.add("fit_seconds", fitted.seconds);
-    report.add("fit_rounds", fitted.report.rounds);
-    report.add("fit_moves", fitted.report.moves);
-    report.add("fit_refused_moves", fitted.report.refused_moves);
-    report.add("fit_flips", fitted.report.flips);
-    report.add("fit_refused_flips", fitted.report.refused_flips);
-  }
   report.add("repairs", read_report.repairs);
-  report.add("attributes", attributes);
-  report.add("merge_distance", request.merge_distance);
-  report.add("merged_pairs", merge_report.merged_pairs);
-  report.add("stitched_edges", merge_report.stitched_edges);
-  report.add("refused_pairs", merge_report.refused_pairs);
-  for (const auto& [reason, count] : merge_report.refused_by_reason)
-    report.add("refused_pairs_" + reason, count);
-  for (const auto& [name, value] : settings.options) report.add("option_" + name, value);
+  report.add("attributes", corner_attributes_word(input_had_corner_values, run.attributes_carried));
   Mesh_error error;
   if (measure) {
     const std::size_t samples = request.samples.value_or(kDefaultErrorSamples);
@@ -267,12 +244,13 @@ int run(int argc, char** argv) {
   if (request.json) {
     std::cout << report.str() << '\n';
   } else if (!quiet) {
-    std::printf("%s: %zu -> %zu faces in %.3f s (%s)\n", policy->name.c_str(), input_faces,
-                std::size_t(mesh.number_of_faces()), outcome.seconds,
-                to_string(outcome.stop_reason));
-    if (specks.components + vanished.components > 0)
+    std::printf("%s: %zu -> %zu faces in %.3f s (%s)\n", name.c_str(), run.input_faces,
+                run.output_faces, run.total_seconds(), to_string(run.stop_reason));
+    const std::size_t dropped = run.dropped_before.components + run.dropped_after.components;
+    if (dropped > 0)
       std::printf("dropped %zu small components (%zu faces) before, %zu (%zu faces) after\n",
-                  specks.components, specks.faces, vanished.components, vanished.faces);
+                  run.dropped_before.components, run.dropped_before.faces,
+                  run.dropped_after.components, run.dropped_after.faces);
     if (snapshot) std::printf("wrote %s\n", snapshot->png.c_str());
     if (measure)
       std::printf("two-sided Hausdorff %.4f%%, mean %.4f%% / %.4f%% of the diagonal\n",

@@ -37,6 +37,7 @@
 #include <map>
 #include <numeric>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 namespace cgal_policies {
@@ -71,8 +72,11 @@ class Corner_attribute_carrier {
 
   // Where the collapse of the profile's edge may put the kept vertex: `proposed`, the point of a
   // seam vertex, or nowhere.
+  // Throws std::logic_error before started(): the collapses of a run whose visitor does not feed
+  // the carrier (Attribute_carrying_visitor.h) would leave every corner value behind.
   template <class Profile>
   std::optional<Point> seam_placement(const Profile& profile, const Point& proposed) const {
+    require_started();
     const Halfedge edge = profile.v0_v1();
     const auto closes_chart = [&] {
       for (Halfedge h : {edge, m_mesh->opposite(edge)})
@@ -153,6 +157,7 @@ class Corner_attribute_carrier {
   // filter or OnCollapsing (Edge_collapse.h, collect()). Such a collapse moves no point, so every
   // face around it keeps its values: they are recorded here and put back by collapsed().
   void started() {
+    m_started = true;
     m_checked.reset();
     m_unmoved.clear();
     for (auto e : m_mesh->edges()) {
@@ -224,6 +229,13 @@ class Corner_attribute_carrier {
   }
 
  private:
+  void require_started() const {
+    if (!m_started)
+      throw std::logic_error(
+          "Corner_attribute_carrier: edge_collapse runs without Attribute_carrying_visitor, so "
+          "the corner values would not follow the collapses");
+  }
+
   // What a profile of CGAL's gives the rules, for an edge alone.
   struct Edge_view {
     const Mesh* mesh;
@@ -407,6 +419,7 @@ class Corner_attribute_carrier {
   Mesh* m_mesh;
   Attributes m_attributes;
   Solver m_solver;
+  bool m_started = false;  // started() was called: a visitor feeds the carrier
   std::vector<Pending_face> m_pending;
   std::map<Face, Face_values> m_unmoved;  // faces around edges of zero length, until the loop
   mutable std::vector<std::size_t> m_seam_counts;  // kUnknown until asked

@@ -7,7 +7,7 @@
 
 #include "Byte_reader.h"
 
-#include "common/Mesh_types.h"
+#include "app_types.h"
 
 #include <algorithm>
 #include <cstddef>

@@ -1,25 +1,23 @@
-// Fuzzes every policy of the registry as simplify runs it, on small meshes built from the bytes
-// (fuzz_soup.h, repaired by the reader's pipeline) with options drawn from the bytes, each within
-// its documented range, and the passes around the run (small components, smoothing, fitting). The
-// output must be a valid triangle mesh with finite points, manifold when the input is; it meets
-// the face target or says why not; and when the run has a two-sided bound, the evaluator finds
-// no sample farther than it. The mesh may carry texture coordinates and normals, cut into charts
+// Fuzzes the library's pipeline as simplify runs it (apps/pipeline/Pipeline.h): every policy of the
+// registry on small meshes built from the bytes (fuzz_soup.h, repaired by the reader's pipeline)
+// with options drawn from the bytes, each within its documented range, and the passes around the
+// run (small components, dropped pieces, smoothing, fitting). After each pass the mesh must be a
+// valid triangle mesh with finite points, manifold when the input is; the run meets the face target
+// or says why not; and when the run has a two-sided bound, the evaluator finds no sample farther
+// than it. The mesh may carry texture coordinates and normals, cut into charts
 // (so with seams); a run that carries them keeps them finite, keeps every seam corner where it
 // was, and turns no texture triangle over.
 #include "fuzz_checks.h"
 #include "fuzz_soup.h"
 
-#include "common/App_error.h"
-#include "common/fitting.h"
-#include "common/mesh_io.h"
-#include "common/mesh_measures.h"
-#include "common/policy_registry.h"
-#include "common/small_components.h"
-#include "common/smoothing.h"
+#include "evaluation/mesh_validity.h"
+#include "evaluation/surface_error.h"
+#include "io/mesh_io.h"
+#include "pipeline/Pipeline.h"
+#include "pipeline/policy_registry.h"
 
 #include <cgal_policies/Corner_attribute_carrier.h>
 #include <cgal_policies/Corner_attributes.h>
-#include <cgal_policies/Two_sided_fitter.h>
 
 #include <algorithm>
 #include <cmath>
@@ -82,7 +80,7 @@ Seam_record record_seams(apps::Mesh& mesh) {
   return record;
 }
 
-// After a run that carried the attributes, before its garbage is collected.
+// After a run that carried the attributes.
 void require_seams_kept(const apps::Mesh& mesh, const Seam_record& record, const std::string& run) {
   const Attributes attributes(mesh);
   for (const auto f : mesh.faces()) {
@@ -115,16 +113,17 @@ double option_value(const apps::Policy_option& option, fuzz::Byte_reader& bytes)
   return value;
 }
 
-apps::Simplify_settings read_settings(const apps::Policy_entry& policy, std::size_t faces,
-                                      fuzz::Byte_reader& bytes) {
-  apps::Simplify_settings settings = apps::default_settings(policy, 0);
-  settings.target_faces = std::max<std::size_t>(1, std::size_t(std::llround(bytes.unit() * faces)));
-  if (bytes.u8() >= 128) settings.max_normal_angle_deg = bytes.unit() * 180;
+// The policy's options and the angle from the bytes; max_error for a policy that takes it.
+void read_settings(const apps::Policy_entry& policy, fuzz::Byte_reader& bytes,
+                   cgal_policies::Simplification_options& options) {
+  options.policy = policy.policy;
+  if (bytes.u8() >= 128) options.max_normal_angle_deg = bytes.unit() * 180;
+  apps::Option_values values;
   for (const apps::Policy_option& option : policy.options)
-    if (bytes.u8() >= 128) settings.options[option.name] = option_value(option, bytes);
-  apps::check_policy_options(policy, settings.options);
-  if (policy.takes_error_bound && bytes.u8() >= 128) settings.max_error = 1e-4 + bytes.unit() * 0.2;
-  return settings;
+    if (bytes.u8() >= 128) values[option.name] = option_value(option, bytes);
+  apply_policy_options(policy, values, options);
+  if (cgal_policies::runs_edge_collapse(policy.policy) && bytes.u8() >= 128)
+    options.max_error = 1e-4 + bytes.unit() * 0.2;
 }
 
 // The evaluator's two-sided Hausdorff distance of `mesh` to `original` is within `bound` (a
@@ -140,6 +139,7 @@ void require_within(const apps::Mesh& original, const apps::Mesh& mesh, double b
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using cgal_policies::Simplification_pass;
   fuzz::Byte_reader bytes(data, size);
   const auto& registry = apps::policy_registry();
   const apps::Policy_entry& policy = registry[bytes.u8() % registry.size()];
@@ -152,54 +152,55 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   apps::Mesh mesh;
   try {
     mesh = apps::triangle_mesh_from_soup("soup", soup.points, soup.polygons);
-  } catch (const apps::App_error&) {
+  } catch (const cgal_policies::io::Io_error&) {
     return 0;  // the repair fuzzer covers what the reader refuses
   }
-  apps::Simplify_settings settings = read_settings(policy, mesh.number_of_faces(), settings_bytes);
-  const std::string run = policy.name + " to " + std::to_string(settings.target_faces) + " faces";
-
-  apps::drop_components_smaller_than(mesh, min_component);
-  paint_corner_attributes(mesh, attribute_mode);
-  const apps::Mesh original = mesh;
-  const Seam_record seams = record_seams(mesh);
-  const bool manifold_input =
-      fuzz::require_finite_triangle_mesh(original, "the input").non_manifold_vertices == 0;
-  // Valid, finite, manifold when the input is, and within the run's bound when it has one.
-  const auto require_sound = [&](double bound, const std::string& after) {
-    const apps::Mesh_validity validity = fuzz::require_finite_triangle_mesh(mesh, after);
-    require(!manifold_input || validity.non_manifold_vertices == 0, after + ": manifold");
-    if (bound > 0) require_within(original, mesh, bound, after);
-  };
-  const apps::Simplify_outcome outcome = policy.run(mesh, settings);
-  if (outcome.attributes_carried) require_seams_kept(mesh, seams, run);
-  mesh.collect_garbage();
-  double bound = apps::two_sided_bound(policy, settings);
-  require_sound(bound, run);
-  require(outcome.stop_reason != apps::Stop_reason::target_reached ||
-              mesh.number_of_faces() <= settings.target_faces,
-          run + ": the target is met when the run says so");
-  require(mesh.number_of_faces() <= original.number_of_faces(), run + ": no face added");
-  // Pieces dropped whole are gone from the output by the user's choice: no bound holds after it.
-  if ((passes & 2) && apps::drop_smallest_components_until(mesh, settings.target_faces).faces > 0) {
-    bound = 0;
-    require_sound(bound, run + ", pieces dropped");
-  }
-
+  cgal_policies::Simplification_options options;
+  options.fit = false;
+  options.target = cgal_policies::Face_target::faces(std::max<std::size_t>(
+      1, std::size_t(std::llround(settings_bytes.unit() * mesh.number_of_faces()))));
+  read_settings(policy, settings_bytes, options);
+  options.min_component = min_component;
+  options.drop_small_pieces = passes & 2;
+  const double bound = options.two_sided_bound();
   if (passes & 4) {
-    apps::Smoothing_request smoothing;
-    smoothing.iterations = 1 + (passes >> 5) % 3;
-    smoothing.bounded = bound > 0;
-    apps::smooth_mesh(mesh, original, smoothing, bound);
-    require_sound(bound, run + ", smoothed");
+    options.smoothing.iterations = 1 + (passes >> 5) % 3;
+    options.smoothing.bounded = bound > 0;
   }
   if (passes & 8) {
-    cgal_policies::Two_sided_fit_options options;
-    options.rounds = 1 + (passes >> 4) % 2;
-    options.min_input_samples = 2000;  // the default's 100,000 are slow in the sanitized build
-    options.max_normal_angle_deg = settings.max_normal_angle_deg;
-    options.tolerance = bound;
-    cgal_policies::Two_sided_fitter<apps::Mesh>(original, options).fit(mesh);
-    require_sound(bound, run + ", fitted");
+    options.fit = true;
+    options.fit_options.rounds = 1 + (passes >> 4) % 2;
+    options.fit_options.min_input_samples = 2000;  // the default's are slow in the sanitized build
   }
+  const std::string run =
+      policy.name + " to " + std::to_string(options.target.face_count()) + " faces";
+
+  paint_corner_attributes(mesh, attribute_mode);
+  const apps::Mesh original = mesh;
+  Seam_record seams = record_seams(mesh);
+  const bool manifold_input =
+      fuzz::require_finite_triangle_mesh(original, "the input").non_manifold_vertices == 0;
+  // Components dropped whole are gone from the output by the user's choice: no bound holds after.
+  double kept_bound = bound;
+  const bool carried = cgal_policies::Corner_attributes<apps::Point>(mesh).any_corner_values();
+  // Valid, finite, manifold when the input is, and within the run's bound when it has one.
+  options.pass_done = [&](Simplification_pass pass) {
+    const std::string after = run + ", " + to_string(pass);
+    if (pass == Simplification_pass::components) seams = record_seams(mesh);
+    if (pass == Simplification_pass::simplification && carried)
+      require_seams_kept(mesh, seams, after);
+    const bool dropping =
+        pass == Simplification_pass::components || pass == Simplification_pass::pieces;
+    if (dropping && mesh.number_of_faces() < original.number_of_faces()) kept_bound = 0;
+    const apps::Mesh_validity validity = fuzz::require_finite_triangle_mesh(mesh, after);
+    require(!manifold_input || validity.non_manifold_vertices == 0, after + ": manifold");
+    if (kept_bound > 0) require_within(original, mesh, kept_bound, after);
+  };
+  const cgal_policies::Simplification_report report = apps::Pipeline(options).run(mesh, original);
+  require(!carried || report.attributes_carried, run + ": the corner attributes carried");
+  require(report.stop_reason != cgal_policies::Stop_reason::target_reached ||
+              report.output_faces <= report.target_faces,
+          run + ": the target is met when the run says so");
+  require(mesh.number_of_faces() <= original.number_of_faces(), run + ": no face added");
   return 0;
 }

@@ -1,13 +1,13 @@
 // Fuzzes one reader (the extension is FUZZ_EXTENSION, one target per format): the bytes become a
 // file that apps::read_triangle_mesh reads as simplify would when it keeps corner attributes
 // (texture coordinates, normals, colours and materials of OBJ, PLY and glTF). It
-// must give a valid triangle mesh or App_error(exit_bad_input) with one line; anything else (a
+// must give a valid triangle mesh or Io_error (unreadable input) with one line; anything else (a
 // crash, another exception, a sanitizer report, an allocation beyond libFuzzer's limit, a hang) is
 // a finding.
 #include "fuzz_checks.h"
 
-#include "common/App_error.h"
-#include "common/mesh_io.h"
+#include "io/Io_error.h"
+#include "io/mesh_io.h"
 
 #include <unistd.h>
 
@@ -43,8 +43,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const apps::Mesh mesh =
         apps::read_triangle_mesh(path, nullptr, apps::Corner_attribute_reading::keep);
     fuzz::require_finite_triangle_mesh(mesh, "a mesh read from " + path);
-  } catch (const apps::App_error& error) {
-    fuzz::require_one_line_error(error, apps::exit_bad_input);
+  } catch (const cgal_policies::io::Io_error& error) {
+    fuzz::require(error.kind() == cgal_policies::io::Io_error::Kind::unreadable_input,
+                  std::string("an unreadable input: ") + error.what());
+    fuzz::require_one_line(error.what());
     fuzz::require(std::string(error.what()).rfind(path + ": ", 0) == 0,
                   "the error names the file: '" + std::string(error.what()) + "'");
   }

@@ -1,13 +1,13 @@
 // Fuzzes the reader's repair pipeline (apps::triangle_mesh_from_soup) on polygon soups built from
-// the bytes (fuzz_soup.h): a valid triangle mesh, or App_error(exit_bad_input) with one line.
+// the bytes (fuzz_soup.h): a valid triangle mesh, or Io_error (unreadable input) with one line.
 // Checks too that the reader's fast path (clean_triangle_soup.h) takes exactly the soups that CGAL
 // calls triangle meshes, and builds them as CGAL does.
 #include "fuzz_checks.h"
 #include "fuzz_soup.h"
 
-#include "common/App_error.h"
-#include "common/clean_triangle_soup.h"
-#include "common/mesh_io.h"
+#include "io/Io_error.h"
+#include "io/clean_triangle_soup.h"
+#include "io/mesh_io.h"
 
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair.h>
@@ -60,8 +60,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const apps::Mesh mesh = apps::triangle_mesh_from_soup("soup", soup.points, soup.polygons);
     fuzz::require_finite_triangle_mesh(mesh, "a repaired soup");
-  } catch (const apps::App_error& error) {
-    fuzz::require_one_line_error(error, apps::exit_bad_input);
+  } catch (const cgal_policies::io::Io_error& error) {
+    fuzz::require(error.kind() == cgal_policies::io::Io_error::Kind::unreadable_input,
+                  std::string("an unreadable input: ") + error.what());
+    fuzz::require_one_line(error.what());
   }
   return 0;
 }

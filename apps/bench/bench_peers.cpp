@@ -2,9 +2,9 @@
 
 namespace apps {
 
-std::vector<Policy_entry> bench_peers() {
-  std::vector<Policy_entry> all = envelope_peers();
-  const auto append = [&all](const std::vector<Policy_entry>& group) {
+std::vector<Bench_row> bench_peers() {
+  std::vector<Bench_row> all = envelope_peers();
+  const auto append = [&all](const std::vector<Bench_row>& group) {
     all.insert(all.end(), group.begin(), group.end());
   };
 #ifdef CGAL_POLICIES_WITH_MESHOPTIMIZER

@@ -1,7 +1,7 @@
 #include "bench_report.h"
 
-#include "common/Json_object.h"
-#include "common/fitting.h"
+#include "Bench_row.h"
+#include "cli/Json_object.h"
 
 #include <algorithm>
 #include <cmath>
@@ -66,7 +66,9 @@ std::string target_cell(const Run_record& r) {
 }
 
 bool reached(const Run_record& r) { return r.output_faces <= r.target_faces; }
-bool timed_out(const Run_record& r) { return r.stop_reason == to_string(Stop_reason::time_limit); }
+bool timed_out(const Run_record& r) {
+  return r.stop_reason == to_string(cgal_policies::Stop_reason::time_limit);
+}
 
 std::string faces_cell(const Run_record& r) {
   return std::to_string(r.output_faces) + (timed_out(r) ? "†" : reached(r) ? "" : "*");

@@ -1,8 +1,9 @@
 #include "bench_runner.h"
 
 #include "Run_memory_probe.h"
-#include "common/Stopwatch.h"
-#include "common/mesh_io.h"
+#include "cli/Stopwatch.h"
+#include "cli/report_fields.h"
+#include "io/mesh_io.h"
 
 #include <cgal_policies/Corner_attributes.h>
 
@@ -40,34 +41,22 @@ double median(std::vector<double> values) {
   return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
 }
 
-Simplify_settings settings_for(const Policy_entry& policy, std::size_t target_faces,
-                               const Bench_plan& plan) {
-  Simplify_settings settings = default_settings(policy, target_faces);
-  settings.time_limit_seconds = plan.time_limit_seconds;
-  const std::map<std::string, double>& given = plan.options;
-  for (auto& [name, value] : settings.options) {
-    const auto it = given.find(name);
-    if (it != given.end()) value = it->second;
-  }
-  return settings;
-}
-
-// Runs one policy `repetitions` times on copies of `original`; keeps the first result. A run cut
+// Runs one row `repetitions` times on copies of `original`; keeps the first result. A run cut
 // short by the time limit is not repeated: the others would be cut short too.
-Run_record run_policy(const Mesh& original, const Policy_entry& policy, const Bench_plan& plan,
-                      const Simplify_settings& settings, Bench_progress& progress,
-                      const std::string& case_name) {
+Run_record run_row(const Mesh& original, const Bench_row& row, const Bench_plan& plan,
+                   const Bench_settings& settings, Bench_progress& progress,
+                   const std::string& case_name) {
   Run_record record;
-  record.policy = policy.name;
+  record.policy = row.name;
   record.repetitions = plan.repetitions;
   std::vector<double> seconds, fit_seconds;
   Mesh result;
   for (std::size_t rep = 0; rep < plan.repetitions; ++rep) {
-    progress.start_run(case_name + ", " + policy.name + ", repetition " + std::to_string(rep + 1) +
+    progress.start_run(case_name + ", " + row.name + ", repetition " + std::to_string(rep + 1) +
                        "/" + std::to_string(plan.repetitions));
     Mesh mesh = original;
     const Run_memory_probe memory;
-    const Simplify_outcome outcome = policy.run(mesh, settings);
+    const Bench_run outcome = row.run(mesh, settings);
     record.peak_memory_mib = std::max(record.peak_memory_mib, memory.peak_mib());
     record.memory_added_mib = std::max(record.memory_added_mib, memory.added_mib());
     seconds.push_back(outcome.seconds);
@@ -77,14 +66,15 @@ Run_record run_policy(const Mesh& original, const Policy_entry& policy, const Be
       record.fit_flips = outcome.fit_flips;
       if (plan.attributes)
         record.attributes = corner_attributes_word(
-            cgal_policies::Corner_attributes<Point>(original).any_corner_values(), outcome);
+            cgal_policies::Corner_attributes<Point>(original).any_corner_values(),
+            outcome.attributes_carried);
       result = std::move(mesh);
     } else if (mesh.number_of_faces() != result.number_of_faces()) {
       std::fprintf(stderr, "simplify_bench: %s: %s is not deterministic (%zu then %zu faces)\n",
-                   case_name.c_str(), policy.name.c_str(), std::size_t(result.number_of_faces()),
+                   case_name.c_str(), row.name.c_str(), std::size_t(result.number_of_faces()),
                    std::size_t(mesh.number_of_faces()));
     }
-    if (outcome.stop_reason == Stop_reason::time_limit) {
+    if (outcome.stop_reason == cgal_policies::Stop_reason::time_limit) {
       record.repetitions = rep + 1;
       break;
     }
@@ -113,7 +103,7 @@ double mean_error_rel(const Run_record& r) {
 std::vector<Run_record> run_bench(const Bench_plan& plan) {
   std::size_t total = 0;
   for (const Bench_mesh& m : plan.meshes)
-    total += m.targets.size() * plan.policies.size() * plan.repetitions;
+    total += m.targets.size() * plan.rows.size() * plan.repetitions;
   Bench_progress progress(total);
 
   std::vector<Run_record> records;
@@ -131,9 +121,9 @@ std::vector<Run_record> run_bench(const Bench_plan& plan) {
       const std::string case_name =
           name + " to " + std::to_string(target_faces) + " faces (" + describe_target(target) + ")";
       const std::size_t first = records.size();
-      for (const Policy_entry& policy : plan.policies) {
-        const Simplify_settings settings = settings_for(policy, target_faces, plan);
-        Run_record r = run_policy(original, policy, plan, settings, progress, case_name);
+      for (const Bench_row& row : plan.rows) {
+        const Bench_settings settings{target_faces, plan.time_limit_seconds, plan.options};
+        Run_record r = run_row(original, row, plan, settings, progress, case_name);
         r.mesh = name;
         r.input_faces = original.number_of_faces();
         r.input_vertices = original.number_of_vertices();

@@ -4,9 +4,11 @@
 #ifndef CGAL_POLICIES_APPS_BENCH_BENCH_RUNNER_H
 #define CGAL_POLICIES_APPS_BENCH_BENCH_RUNNER_H
 
+#include "Bench_row.h"
 #include "bench_presets.h"
-#include "common/mesh_measures.h"
-#include "common/policy_registry.h"
+#include "evaluation/attribute_error.h"
+#include "evaluation/mesh_validity.h"
+#include "evaluation/surface_error.h"
 
 #include <cstddef>
 #include <functional>
@@ -19,12 +21,12 @@ namespace apps {
 struct Run_record;
 
 struct Bench_plan {
-  std::vector<Bench_mesh> meshes;         // paths as given to the reader
-  std::vector<Policy_entry> policies;     // "gh" among them: the reference of every time ratio
-  std::map<std::string, double> options;  // option values given on the command line
+  std::vector<Bench_mesh> meshes;  // paths as given to the reader
+  std::vector<Bench_row> rows;     // "gh" among them: the reference of every time ratio
+  Option_values options;           // option values given on the command line
   std::size_t repetitions = 1;
   std::size_t samples = kDefaultErrorSamples;
-  // A run still going after this many seconds stops where it is (0: no limit); see run_policy.
+  // A run still going after this many seconds stops where it is (0: no limit); see run_row.
   double time_limit_seconds = 0;
   // Read the meshes' corner attributes (OBJ), carry them, and measure them (Run_record).
   bool attributes = false;
@@ -32,7 +34,7 @@ struct Bench_plan {
   std::function<void(const std::vector<Run_record>&)> on_mesh_done;
 };
 
-// One policy on one mesh and target: the result of the first repetition, the times of all.
+// One row on one mesh and target: the result of the first repetition, the times of all.
 struct Run_record {
   std::string mesh;  // file name
   std::size_t input_faces = 0, input_vertices = 0;

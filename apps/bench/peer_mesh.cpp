@@ -47,11 +47,11 @@ Mesh to_mesh(const Indexed_triangles& soup) {
   return mesh;
 }
 
-Stop_reason adopt_peer_result(const Indexed_triangles& result, std::size_t target_faces,
-                              Mesh& mesh) {
+cgal_policies::Stop_reason adopt_peer_result(const Indexed_triangles& result,
+                                             std::size_t target_faces, Mesh& mesh) {
   mesh = to_mesh(result);
-  return mesh.number_of_faces() <= target_faces ? Stop_reason::target_reached
-                                                : Stop_reason::no_collapse_left;
+  return mesh.number_of_faces() <= target_faces ? cgal_policies::Stop_reason::target_reached
+                                                : cgal_policies::Stop_reason::no_collapse_left;
 }
 
 }  // namespace apps

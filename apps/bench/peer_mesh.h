@@ -2,8 +2,8 @@
 #ifndef CGAL_POLICIES_APPS_BENCH_PEER_MESH_H
 #define CGAL_POLICIES_APPS_BENCH_PEER_MESH_H
 
-#include "common/Mesh_types.h"
-#include "common/Stop_reason.h"
+#include <cgal_policies/Stop_reason.h>
+#include "app_types.h"
 
 #include <array>
 #include <cstddef>
@@ -25,8 +25,8 @@ Mesh to_mesh(const Indexed_triangles& soup);
 
 // Makes a peer's result the run's mesh. A peer does not say why it stopped, so the face count
 // tells: the target when it is met, else no collapse left.
-Stop_reason adopt_peer_result(const Indexed_triangles& result, std::size_t target_faces,
-                              Mesh& mesh);
+cgal_policies::Stop_reason adopt_peer_result(const Indexed_triangles& result,
+                                             std::size_t target_faces, Mesh& mesh);
 
 }  // namespace apps
 

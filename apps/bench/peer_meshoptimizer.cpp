@@ -2,7 +2,7 @@
 // arrays, as a game engine would run it. Only the meshopt_simplify call is timed; the conversions
 // to and from its arrays are not part of the method.
 #include "bench_peers.h"
-#include "common/Stopwatch.h"
+#include "cli/Stopwatch.h"
 #include "peer_mesh.h"
 
 #include <meshoptimizer.h>
@@ -10,7 +10,7 @@
 namespace apps {
 namespace {
 
-Simplify_outcome run_meshoptimizer(Mesh& mesh, const Simplify_settings& settings) {
+Bench_run run_meshoptimizer(Mesh& mesh, const Bench_settings& settings) {
   const Indexed_triangles input = to_indexed_triangles(mesh);
   std::vector<float> positions;
   positions.reserve(3 * input.points.size());
@@ -27,7 +27,7 @@ Simplify_outcome run_meshoptimizer(Mesh& mesh, const Simplify_settings& settings
   const std::size_t count = meshopt_simplify(
       output.data(), indices.data(), indices.size(), positions.data(), input.points.size(),
       3 * sizeof(float), 3 * settings.target_faces, kNoErrorLimit, 0, nullptr);
-  Simplify_outcome outcome;
+  Bench_run outcome;
   outcome.seconds = watch.seconds();
 
   // meshopt keeps the input's vertices, so the result takes their exact (double) positions.
@@ -40,13 +40,11 @@ Simplify_outcome run_meshoptimizer(Mesh& mesh, const Simplify_settings& settings
 
 }  // namespace
 
-std::vector<Policy_entry> meshoptimizer_peers() {
-  Policy_entry meshopt{"meshopt",
-                       "meshoptimizer meshopt_simplify (collapses onto existing vertices)",
-                       {},
-                       run_meshoptimizer};
-  meshopt.takes_error_bound = false;
-  return {meshopt};
+std::vector<Bench_row> meshoptimizer_peers() {
+  return {{"meshopt",
+           "meshoptimizer meshopt_simplify (collapses onto existing vertices)",
+           {},
+           run_meshoptimizer}};
 }
 
 }  // namespace apps

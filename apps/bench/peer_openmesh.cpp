@@ -2,7 +2,7 @@
 // collapse that turns a face normal by more than the settings' angle). Initialisation and
 // decimation are timed; the conversions to and from OpenMesh are not.
 #include "bench_peers.h"
-#include "common/Stopwatch.h"
+#include "cli/Stopwatch.h"
 #include "peer_mesh.h"
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
@@ -13,6 +13,9 @@
 namespace apps {
 namespace {
 
+// As this suite's policies refuse by default (cgal_policies::Simplification_options).
+constexpr double kMaxNormalAngleDeg = 90;
+
 // Double precision, so that the peer sees the same coordinates as the other policies.
 struct Open_mesh_traits : OpenMesh::DefaultTraits {
   using Point = OpenMesh::Vec3d;
@@ -20,7 +23,7 @@ struct Open_mesh_traits : OpenMesh::DefaultTraits {
 };
 using Open_mesh = OpenMesh::TriMesh_ArrayKernelT<Open_mesh_traits>;
 
-Simplify_outcome run_openmesh(Mesh& mesh, const Simplify_settings& settings) {
+Bench_run run_openmesh(Mesh& mesh, const Bench_settings& settings) {
   const Indexed_triangles input = to_indexed_triangles(mesh);
   Open_mesh om;
   std::vector<Open_mesh::VertexHandle> handles;
@@ -29,7 +32,7 @@ Simplify_outcome run_openmesh(Mesh& mesh, const Simplify_settings& settings) {
   om.request_face_normals();
   om.update_face_normals();
 
-  Simplify_outcome outcome;
+  Bench_run outcome;
   const Stopwatch watch;
   {
     OpenMesh::Decimater::DecimaterT<Open_mesh> decimater(om);
@@ -37,7 +40,7 @@ Simplify_outcome run_openmesh(Mesh& mesh, const Simplify_settings& settings) {
     OpenMesh::Decimater::ModNormalFlippingT<Open_mesh>::Handle flipping;
     decimater.add(quadric);
     decimater.add(flipping);
-    decimater.module(flipping).set_max_normal_deviation(settings.max_normal_angle_deg);
+    decimater.module(flipping).set_max_normal_deviation(kMaxNormalAngleDeg);
     decimater.initialize();
     decimater.decimate_to_faces(0, settings.target_faces);
     outcome.seconds = watch.seconds();
@@ -61,11 +64,9 @@ Simplify_outcome run_openmesh(Mesh& mesh, const Simplify_settings& settings) {
 
 }  // namespace
 
-std::vector<Policy_entry> openmesh_peers() {
-  Policy_entry openmesh{
-      "openmesh", "OpenMesh Decimater with ModQuadric and ModNormalFlipping", {}, run_openmesh};
-  openmesh.takes_error_bound = false;
-  return {openmesh};
+std::vector<Bench_row> openmesh_peers() {
+  return {
+      {"openmesh", "OpenMesh Decimater with ModQuadric and ModNormalFlipping", {}, run_openmesh}};
 }
 
 }  // namespace apps

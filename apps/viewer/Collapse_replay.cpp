@@ -89,7 +89,7 @@ Collapse_replay::Collapse_replay(const Mesh& input, const Collapse_history& hist
     faces_of[removed].shrink_to_fit();
     m_faces_after[i + 1] = m_faces_after[i] - deaths;
   }
-  m_seconds = history.outcome.seconds;
+  m_seconds = history.report.seconds(cgal_policies::Simplification_pass::simplification);
 }
 
 double Collapse_replay::seconds_after(std::size_t step) const {

@@ -13,7 +13,7 @@ struct Texture_image {
   int width = 0, height = 0;
   std::vector<std::uint8_t> rgb;
 
-  // Throws App_error(exit_bad_input, "<path>: <cause>") when the file is not an image stb reads.
+  // Throws Io_error (unreadable input, "<path>: <cause>") when the file is not an image stb reads.
   static Texture_image load(const std::string& path);
 
   // The colour (red, green, blue in [0, 1]) at texture coordinates (u, v), v = 0 being the bottom

@@ -3,8 +3,10 @@
 #include "Collapse_replay.h"
 #include "Latest_task.h"
 #include "Surface_distance.h"
-#include "common/fitting.h"
-#include "common/mesh_measures.h"
+#include "evaluation/attribute_error.h"
+#include "evaluation/mesh_validity.h"
+#include "evaluation/surface_error.h"
+#include "pipeline/Pipeline.h"
 #include "snapshot.h"
 
 #include <cgal_policies/Corner_attributes.h>
@@ -30,7 +32,7 @@ struct Simplified {
   std::shared_ptr<const Collapse_replay> replay;  // when its collapses were recorded
   Mesh mesh;                                      // otherwise: simplified straight to `target`
   std::size_t target = 0;
-  Simplify_outcome outcome;
+  cgal_policies::Simplification_report report;
   std::size_t smallest_faces = 1;  // what the slider may ask for
 };
 
@@ -42,11 +44,13 @@ class Viewer {
         m_frame(Mesh_frame::of(m_original)),
         m_title(start.title),
         m_policy(start.policy),
-        m_settings(start.settings),
+        m_options(start.options),
+        m_values(values_of(*start.policy, start.options)),
         m_view(start.view),
         m_heat_map(start.heat_map),
         m_texture(start.texture),
         m_corner_values(cgal_policies::Corner_attributes<Point>(mesh).any_corner_values()),
+        m_fit(start.options.fit),
         m_renderer(gl) {
     m_target =
         std::max<std::size_t>(1, std::size_t(std::llround(start.ratio * double(input_faces()))));
@@ -77,7 +81,7 @@ class Viewer {
   void draw(int width, int height) {
     Scene_captions captions;
     captions.left = mesh_caption("original", input_faces(), m_mesh.number_of_vertices());
-    captions.right = mesh_caption(m_policy->name + (m_fit ? kFitSuffix : ""), m_faces, m_vertices);
+    captions.right = mesh_caption(pipeline_name(run_options()), m_faces, m_vertices);
     if (m_heat_map) {
       captions.legend_max = m_legend_max;
       captions.legend_unit = "% diag";
@@ -92,37 +96,54 @@ class Viewer {
  private:
   std::size_t input_faces() const { return m_original.triangles.size(); }
 
-  // Runs the policy in the background: recording all its collapses, or straight to the target.
+  // The options of the next run: the panel's policy, its values, the angle and the fit.
+  cgal_policies::Simplification_options run_options() const {
+    cgal_policies::Simplification_options options = m_options;
+    options.policy = m_policy->policy;
+    options.fit = m_fit;
+    apply_policy_options(*m_policy, m_values, options);
+    return options;
+  }
+
+  // The values of `policy`'s options in `options`, for the panel to edit.
+  static Option_values values_of(const Policy_entry& policy,
+                                 const cgal_policies::Simplification_options& options) {
+    Option_values values;
+    for (const Policy_option& o : policy.options) values[o.name] = o.get(options);
+    return values;
+  }
+
+  // Runs the pipeline in the background: recording all its collapses, or straight to the target.
   void simplify(bool record) {
-    Simplify_settings settings = m_settings;
-    settings.on_progress = [this](std::size_t faces) { m_progress_faces = faces; };
+    cgal_policies::Simplification_options options = run_options();
+    options.progress = [this](cgal_policies::Simplification_pass, double, std::size_t faces) {
+      m_progress_faces = faces;
+    };
     m_progress_faces = input_faces();
     // A fitted result cannot be replayed collapse by collapse, nor can one that carries the mesh's
     // texture coordinates, normals or colours (a replay has the points only): each target is run
     // anew.
     record = record && !m_fit && !m_corner_values;
     m_recording = record;
-    Policy_entry entry = m_fit ? with_fit(*m_policy) : *m_policy;
-    m_simplifier.submit(
-        [this, record, settings, policy = std::move(entry), target = m_target]() mutable {
-          Simplified result;
-          result.target = target;
-          if (record) {
-            const Collapse_history history = record_collapses(m_mesh, policy, settings);
-            result.outcome = history.outcome;
-            result.smallest_faces = std::max<std::size_t>(1, history.final_faces);
-            // A policy that simplifies outside the edge-collapse visitor leaves no history.
-            if (!history.collapses.empty()) {
-              result.replay = std::make_shared<const Collapse_replay>(m_mesh, history);
-              return result;
-            }
-          }
-          result.mesh = m_mesh;
-          settings.target_faces = target;
-          result.outcome = policy.run(result.mesh, settings);
-          result.mesh.collect_garbage();
+    m_simplifier.submit([this, record, options, target = m_target]() mutable {
+      Simplified result;
+      result.target = target;
+      if (record) {
+        options.target = cgal_policies::Face_target::faces(0);
+        const Collapse_history history = record_collapses(m_mesh, options);
+        result.report = history.report;
+        result.smallest_faces = std::max<std::size_t>(1, history.final_faces);
+        // A policy that simplifies outside the edge-collapse visitor leaves no history.
+        if (!history.collapses.empty()) {
+          result.replay = std::make_shared<const Collapse_replay>(m_mesh, history);
           return result;
-        });
+        }
+      }
+      result.mesh = m_mesh;
+      options.target = cgal_policies::Face_target::faces(target);
+      result.report = Pipeline(options).run(result.mesh);
+      return result;
+    });
   }
 
   // Shows the current result at the current target, and measures it in the background.
@@ -135,7 +156,7 @@ class Viewer {
       m_seconds = replay.seconds_after(step);
     } else {
       mesh = Indexed_mesh::from_mesh(m_current->mesh);
-      m_seconds = m_current->outcome.seconds;
+      m_seconds = m_current->report.total_seconds();
       m_distance_cache.clear();  // the vertex indices are the new mesh's own
     }
     m_faces = mesh.triangles.size();
@@ -171,16 +192,14 @@ class Viewer {
       for (const Policy_entry& entry : policy_registry())
         if (ImGui::Selectable(entry.name.c_str(), &entry == m_policy) && &entry != m_policy) {
           m_policy = &entry;
-          const double angle = m_settings.max_normal_angle_deg;
-          m_settings = default_settings(entry, 0);
-          m_settings.max_normal_angle_deg = angle;
+          m_values = values_of(entry, cgal_policies::Simplification_options());
           changed = true;
         }
       ImGui::EndCombo();
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", m_policy->summary.c_str());
     for (const Policy_option& option : m_policy->options) {
-      double& value = m_settings.options[option.name];
+      double& value = m_values[option.name];
       if (option.is_flag) {
         bool on = value != 0;
         if (ImGui::Checkbox(option.name.c_str(), &on)) {
@@ -192,7 +211,7 @@ class Viewer {
         if (ImGui::IsItemActivated()) m_value_before_edit = value;
         if (ImGui::IsItemDeactivatedAfterEdit()) {
           try {
-            check_policy_options(*m_policy, {{option.name, value}});
+            check_option_values(m_policy->name, m_policy->options, {{option.name, value}});
             changed = true;
           } catch (const std::exception& e) {  // out of range: say so, keep the old value
             m_message = e.what();
@@ -202,7 +221,7 @@ class Viewer {
       }
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", option.help.c_str());
     }
-    ImGui::InputDouble("max normal angle", &m_settings.max_normal_angle_deg, 0, 0, "%.4g");
+    ImGui::InputDouble("max normal angle", &m_options.max_normal_angle_deg, 0, 0, "%.4g");
     changed |= ImGui::IsItemDeactivatedAfterEdit();
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("our policies refuse collapses that turn a face normal further (degrees)");
@@ -274,14 +293,15 @@ class Viewer {
   const Mesh_frame m_frame;
   const std::string m_title;
   const Policy_entry* m_policy;
-  Simplify_settings m_settings;
+  cgal_policies::Simplification_options m_options;  // but for the policy's option values
+  Option_values m_values;                           // the policy's, as the panel edits them
   View_options m_view;
   float m_panel_width = 0;         // in window coordinates, as the last frame laid it out
   double m_value_before_edit = 0;  // of the policy option being edited
   bool m_heat_map;
   const Texture_image* m_texture;  // for the meshes with texture coordinates; may be none
   const bool m_corner_values;      // the input has texture coordinates, normals or colours
-  bool m_fit = false;              // run the policy's "+fit" entry (common/fitting.h)
+  bool m_fit;                      // the fitting pass after the policy (docs/fitting.md)
   Scene_renderer m_renderer;
   Orbit_camera m_camera;
   std::size_t m_target = 1;

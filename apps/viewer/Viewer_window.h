@@ -8,7 +8,7 @@
 
 #include "Scene_renderer.h"
 #include "Texture_image.h"
-#include "common/policy_registry.h"
+#include "pipeline/policy_registry.h"
 
 #include <cstddef>
 #include <string>
@@ -18,8 +18,8 @@ namespace apps {
 struct Viewer_start {
   std::string title;  // shown in the window's title and the panel
   const Policy_entry* policy = nullptr;
-  Simplify_settings settings;  // the policy's options
-  double ratio = 0.1;          // initial target, as a fraction of the input's faces
+  cgal_policies::Simplification_options options;  // the policy's, the angle, the fit
+  double ratio = 0.1;  // initial target, as a fraction of the input's faces
   View_options view;
   bool heat_map = false;
   // Drawn on the meshes that have texture coordinates; must outlive the window.

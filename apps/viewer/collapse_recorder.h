@@ -3,7 +3,10 @@
 #ifndef CGAL_POLICIES_APPS_VIEWER_COLLAPSE_RECORDER_H
 #define CGAL_POLICIES_APPS_VIEWER_COLLAPSE_RECORDER_H
 
-#include "common/policy_registry.h"
+#include "app_types.h"
+
+#include <cgal_policies/Simplification_options.h>
+#include <cgal_policies/Simplification_report.h>
 
 #include <cstddef>
 #include <vector>
@@ -21,13 +24,12 @@ struct Collapse_history {
   // simplifies straight to each target instead of replaying.
   std::vector<Collapse_record> collapses;
   std::size_t input_faces = 0, final_faces = 0;
-  Simplify_outcome outcome;
+  cgal_policies::Simplification_report report;
 };
 
-// Runs `policy` on a copy of `input` (which must hold no garbage) down to settings.target_faces,
-// recording every collapse; settings.on_progress is kept.
-Collapse_history record_collapses(const Mesh& input, const Policy_entry& policy,
-                                  Simplify_settings settings);
+// Runs the pipeline of `options` on a copy of `input` (which must hold no garbage) down to its
+// target, recording every collapse; options.progress is kept.
+Collapse_history record_collapses(const Mesh& input, cgal_policies::Simplification_options options);
 
 }  // namespace apps
 

@@ -2,17 +2,21 @@
 // as a slider moves (README.md, "Anyone looks"; the 2014 report's preview). With --snapshot, the
 // same picture is rendered without a window and written as a PNG.
 #include "Viewer_window.h"
-#include "common/App_error.h"
-#include "common/Command_line.h"
-#include "common/app_main.h"
-#include "common/mesh_io.h"
-#include "common/policy_command_line.h"
+#include "cli/App_error.h"
+#include "cli/Command_line.h"
+#include "cli/Snapshot_renderer.h"
+#include "cli/app_main.h"
+#include "cli/pass_options.h"
+#include "cli/policy_command_line.h"
+#include "io/mesh_io.h"
+#include "pipeline/Pipeline.h"
 #include "snapshot.h"
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <tuple>
 
 namespace apps {
 namespace {
@@ -27,8 +31,10 @@ void print_help() {
          "OBJ's map_Kd), or with colours, is drawn with them, and so is each simplification that\n"
          "carries them.\n\n"
          "  --policy NAME         "
-      << policy_names()
-      << " (default classic)\n"
+      << policy_names() << " (default: the default pipeline, "
+      << pipeline_name(cgal_policies::Simplification_options())
+      << ")\n"
+         "  --fit                 fit the result to MESH (the default pipeline does)\n"
          "  --ratio R             keep this fraction of the faces, 0 < R <= 1 (default 0.1)\n"
          "  --max-normal-angle A  as for simplify (default 90)\n"
          "  --flat                flat shading instead of smooth\n"
@@ -41,19 +47,17 @@ void print_help() {
          "Exit codes: 0 done, 1 not done, 2 bad usage, 3 bad input, 4 output not written.\n";
 }
 
-int write_snapshot_of(const Mesh& mesh, const Policy_choice& choice, double ratio,
+int write_snapshot_of(const Mesh& mesh, cgal_policies::Simplification_options options, double ratio,
                       Snapshot_settings snapshot, const std::string& png) {
-  Simplify_settings settings = choice.settings;
-  settings.target_faces = std::size_t(std::llround(ratio * double(mesh.number_of_faces())));
+  options.target = cgal_policies::Face_target::ratio(ratio);
   Mesh simplified = mesh;
-  const Simplify_outcome outcome = choice.policy->run(simplified, settings);
-  simplified.collect_garbage();
-  caption_snapshot(mesh, simplified, choice.policy->name, snapshot);
+  const cgal_policies::Simplification_report report = Pipeline(options).run(simplified);
+  const std::string name = pipeline_name(options);
+  caption_snapshot(mesh, simplified, name, snapshot);
   write_snapshot(mesh, simplified, snapshot, png);
-  std::printf("%s: %zu -> %zu faces in %.3f s (%s); wrote %s (%dx%d)\n",
-              choice.policy->name.c_str(), std::size_t(mesh.number_of_faces()),
-              std::size_t(simplified.number_of_faces()), outcome.seconds,
-              to_string(outcome.stop_reason), png.c_str(), snapshot.width, snapshot.height);
+  std::printf("%s: %zu -> %zu faces in %.3f s (%s); wrote %s (%dx%d)\n", name.c_str(),
+              report.input_faces, report.output_faces, report.total_seconds(),
+              to_string(report.stop_reason), png.c_str(), snapshot.width, snapshot.height);
   return exit_success;
 }
 
@@ -63,7 +67,8 @@ int run(int argc, char** argv) {
     print_help();
     return exit_success;
   }
-  const Policy_choice choice = take_policy_options(cli, "classic");
+  Policy_choice choice = take_policy_options(cli);
+  take_fit_options(cli, choice.named, choice.options);
   const double ratio = cli.take_number("ratio").value_or(0.1);
   if (!(ratio > 0 && ratio <= 1)) throw App_error(exit_usage, "the ratio must be in (0, 1]");
   const std::optional<std::string> png = cli.take_value("snapshot");
@@ -76,7 +81,7 @@ int run(int argc, char** argv) {
   if (args.size() != 1)
     throw App_error(exit_usage, "usage: mesh_viewer MESH [options] (see --help)");
   if (size && !png) throw App_error(exit_usage, "--size goes with --snapshot");
-  if (size) parse_snapshot_size(*size, snapshot);
+  if (size) std::tie(snapshot.width, snapshot.height) = parse_picture_size(*size);
   if (png && std::filesystem::path(*png).extension() != ".png")
     throw App_error(exit_usage, *png + ": the snapshot must be a .png file");
 
@@ -84,12 +89,12 @@ int run(int argc, char** argv) {
   Mesh mesh = read_triangle_mesh(args[0], &report, Corner_attribute_reading::keep);
   mesh.collect_garbage();
   snapshot.texture = texture_to_draw(mesh, report.materials);
-  if (png) return write_snapshot_of(mesh, choice, ratio, snapshot, *png);
+  if (png) return write_snapshot_of(mesh, choice.options, ratio, snapshot, *png);
 
   Viewer_start start;
   start.title = std::filesystem::path(args[0]).filename().string();
   start.policy = choice.policy;
-  start.settings = choice.settings;
+  start.options = choice.options;
   start.ratio = ratio;
   start.view = snapshot.view;
   start.heat_map = snapshot.heat_map;

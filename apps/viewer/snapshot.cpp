@@ -2,10 +2,11 @@
 
 #include "Offscreen_context.h"
 #include "Surface_distance.h"
-#include "common/App_error.h"
-#include "common/atomic_write.h"
-#include "common/material_texture.h"
-#include "common/mesh_measures.h"
+#include "evaluation/attribute_error.h"
+#include "evaluation/mesh_validity.h"
+#include "evaluation/surface_error.h"
+#include "io/atomic_write.h"
+#include "io/material_texture.h"
 
 #include <cgal_policies/Corner_attributes.h>
 
@@ -32,16 +33,6 @@ bool show_corner_values(Scene_renderer& renderer, Scene_renderer::Pane pane, con
   renderer.set_mesh(pane, make_corner_render_mesh(mesh, frame));
   if (textured) renderer.set_texture(pane, texture);
   return true;
-}
-
-void parse_snapshot_size(const std::string& text, Snapshot_settings& settings) {
-  int width = 0, height = 0;
-  char rest = 0;
-  if (std::sscanf(text.c_str(), "%dx%d%c", &width, &height, &rest) != 2 || width < 16 ||
-      height < 16 || width > 16384 || height > 16384)
-    throw App_error(exit_usage, "--size: '" + text + "' is not WxH with 16 <= W, H <= 16384");
-  settings.width = width;
-  settings.height = height;
 }
 
 void caption_snapshot(const Mesh& original, const Mesh& simplified, const std::string& policy_name,

@@ -5,7 +5,7 @@
 
 #include "Scene_renderer.h"
 #include "Texture_image.h"
-#include "common/mesh_io.h"
+#include "io/mesh_io.h"
 
 #include <cstddef>
 #include <optional>
@@ -28,8 +28,8 @@ struct Snapshot_settings {
 constexpr std::size_t kViewerErrorSamples = 20000;
 
 // The texture a mesh read with its corner attributes is drawn with: the diffuse map its materials
-// name, when it has texture coordinates. App_error(exit_bad_input) when that file is missing or is
-// not an image, so that an app says so before any work.
+// name, when it has texture coordinates. Io_error (unreadable input) when that file is missing or
+// is not an image, so that an app says so before any work.
 std::optional<Texture_image> texture_to_draw(const Mesh& mesh,
                                              const Material_references& materials);
 
@@ -39,15 +39,12 @@ std::optional<Texture_image> texture_to_draw(const Mesh& mesh,
 bool show_corner_values(Scene_renderer& renderer, Scene_renderer::Pane pane, const Mesh& mesh,
                         const Mesh_frame& frame, const Texture_image* texture);
 
-// Reads --size's "WxH" (16 to 16384 pixels each); App_error(exit_usage) otherwise.
-void parse_snapshot_size(const std::string& text, Snapshot_settings& settings);
-
 // Captions both panes: the face and vertex counts, and under `policy_name` the two-sided error of
 // `simplified` (kViewerErrorSamples samples).
 void caption_snapshot(const Mesh& original, const Mesh& simplified, const std::string& policy_name,
                       Snapshot_settings& settings);
 
-// Throws App_error(exit_bad_output) when the PNG cannot be written (no partial file is left), and
+// Throws Io_error (unwritable output) when the PNG cannot be written (no partial file is left), and
 // std::runtime_error when no offscreen OpenGL 3.3 context is available.
 void write_snapshot(const Mesh& original, const Mesh& simplified, const Snapshot_settings& settings,
                     const std::string& png_path);

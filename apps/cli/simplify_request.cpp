@@ -1,0 +1,63 @@
+#include "simplify_request.h"
+
+#include "App_error.h"
+#include "output_path.h"
+#include "pass_options.h"
+#include "policy_command_line.h"
+#include "target_option.h"
+
+#include <vector>
+
+namespace apps {
+
+Simplify_request take_simplify_request(Command_line& cli) {
+  Simplify_request request;
+  Policy_choice choice = take_policy_options(cli);
+  request.policy = choice.policy;
+  cgal_policies::Simplification_options& options = request.options;
+  options = choice.options;
+  std::optional<double> ratio = cli.take_number("ratio");
+  const std::optional<double> faces = cli.take_whole_number("faces", 1, kMaxCount);
+  const std::optional<double> samples = cli.take_whole_number("samples", 1, kMaxCount);
+  const std::optional<double> max_error = cli.take_number("max-error");
+  options.merge_distance = cli.take_number("merge-distance").value_or(0.0);
+  if (!(options.merge_distance >= 0))
+    throw App_error(exit_usage, "--merge-distance must be at least 0");
+  options.time_limit_seconds = cli.take_number("time-limit").value_or(0.0);
+  if (!(options.time_limit_seconds >= 0 && options.time_limit_seconds <= kMaxTimeLimitSeconds))
+    throw App_error(exit_usage, "--time-limit must be a number of seconds in [0, 1e9]");
+  if (options.time_limit_seconds > 0 && !cgal_policies::runs_edge_collapse(options.policy))
+    throw App_error(exit_usage, "--time-limit needs an edge-collapse policy; " +
+                                    request.policy->name + " runs its own engine (try classic)");
+  options.min_component =
+      std::size_t(cli.take_whole_number("min-component", 0, kMaxCount).value_or(0));
+  options.drop_small_pieces = cli.take_flag("drop-small-pieces");
+  options.smoothing = take_smoothing_options(cli);
+  take_fit_options(cli, choice.named, options);
+  request.json = cli.take_flag("json");
+  request.measure = cli.take_flag("measure");
+  request.force = cli.take_flag("force");
+  request.quiet = cli.take_flag("quiet");
+  if (max_error && !(*max_error > 0)) throw App_error(exit_usage, "--max-error must be positive");
+  if (max_error && !cgal_policies::runs_edge_collapse(options.policy))
+    throw App_error(exit_usage, "--max-error needs an edge-collapse policy; " +
+                                    request.policy->name + " runs its own engine (try classic)");
+  options.max_error = max_error.value_or(0.0);
+  const std::vector<std::string> args = cli.positionals();
+  if (args.size() < 2 || args.size() > 3)
+    throw App_error(exit_usage, "usage: simplify IN OUT [RATIO] [options] (see --help)");
+  if (args.size() == 3) {
+    if (ratio) throw App_error(exit_usage, "give RATIO or --ratio, not both");
+    ratio = parse_number(args[2], "RATIO");
+  }
+  options.target = face_target(ratio, faces);
+  if (samples) request.samples = std::size_t(*samples);
+  if (options.smoothing.bounded && !(options.two_sided_bound() > 0))
+    throw App_error(exit_usage, "--smooth-bounded needs --max-error (or a policy's --tolerance)");
+  request.input = args[0];
+  request.output = args[1];
+  check_output_path(request.input, request.output, request.force);
+  return request;
+}
+
+}  // namespace apps

@@ -1,0 +1,29 @@
+// The reader's fast path: most files already hold an oriented manifold triangle mesh, and for
+// those CGAL's general path (a std::set of every edge to check the soup, then Euler::add_face per
+// face) took most of the reading time. This builds the Surface_mesh straight from the indices.
+#ifndef CGAL_POLICIES_IO_CLEAN_TRIANGLE_SOUP_H
+#define CGAL_POLICIES_IO_CLEAN_TRIANGLE_SOUP_H
+
+#include "Mesh_types.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace cgal_policies {
+namespace io {
+
+// Builds `mesh` from a soup whose indices are all in range (the caller checks them) when every
+// polygon is a triangle of three distinct points, no oriented edge is used twice, no edge has
+// more than two faces, and the faces around each point form one fan. Points no face uses are
+// left out and counted in `unused_points`. Faces, and the used points, keep the soup's order.
+// Returns false and leaves `mesh` empty when the soup is not such a mesh: it needs repair.
+// `vertex_of_point`, when given, gets each point's vertex (a null index for an unused point).
+bool build_mesh_from_clean_triangles(const std::vector<Point>& points,
+                                     const std::vector<std::vector<std::size_t>>& polygons,
+                                     Mesh& mesh, std::size_t& unused_points,
+                                     std::vector<Mesh::Vertex_index>* vertex_of_point = nullptr);
+
+}  // namespace io
+}  // namespace cgal_policies
+
+#endif  // CGAL_POLICIES_IO_CLEAN_TRIANGLE_SOUP_H

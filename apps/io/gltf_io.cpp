@@ -1,0 +1,620 @@
+#include "gltf_io.h"
+
+#include "Io_error.h"
+#include "Wedge_mesh.h"
+
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <exception>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <vector>
+
+namespace cgal_policies {
+namespace io {
+namespace {
+
+namespace fs = std::filesystem;
+
+[[noreturn]] void fail(const std::string& path, const std::string& cause) {
+  throw Io_error(Io_error::Kind::unreadable_input, path + ": " + cause);
+}
+
+// tinygltf's messages end each cause with a newline: one line for the error.
+std::string one_line(std::string text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+  std::string line;
+  for (char c : text) line += c == '\n' ? std::string("; ") : std::string(1, c);
+  return line;
+}
+
+// Keeps an image's bytes as the file holds them: nothing here looks at pixels, and a glTF file
+// written from this one embeds them unchanged (stb would decode them, and re-encode on writing).
+bool keep_image_bytes(tinygltf::Image* image, int, std::string*, std::string*, int, int,
+                      const unsigned char* bytes, int size, void*) {
+  image->image.assign(bytes, bytes + size);
+  image->as_is = true;
+  return true;
+}
+
+// ---- Reading ---------------------------------------------------------------------------------
+
+using Matrix = std::array<double, 16>;  // column-major, as glTF stores it
+constexpr Matrix kIdentity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+
+Matrix product(const Matrix& a, const Matrix& b) {
+  Matrix c{};
+  for (int col = 0; col < 4; ++col)
+    for (int row = 0; row < 4; ++row)
+      for (int k = 0; k < 4; ++k) c[col * 4 + row] += a[k * 4 + row] * b[col * 4 + k];
+  return c;
+}
+
+// The node's matrix, or its translation * rotation * scale.
+Matrix local_matrix(const tinygltf::Node& node) {
+  Matrix m = kIdentity;
+  if (node.matrix.size() == 16) {
+    std::copy(node.matrix.begin(), node.matrix.end(), m.begin());
+    return m;
+  }
+  if (node.rotation.size() == 4) {
+    const double x = node.rotation[0], y = node.rotation[1], z = node.rotation[2],
+                 w = node.rotation[3];
+    // The rotation matrix, column by column.
+    // clang-format off
+    m = {1 - 2 * (y * y + z * z), 2 * (x * y + z * w),     2 * (x * z - y * w),     0,
+         2 * (x * y - z * w),     1 - 2 * (x * x + z * z), 2 * (y * z + x * w),     0,
+         2 * (x * z + y * w),     2 * (y * z - x * w),     1 - 2 * (x * x + y * y), 0,
+         0,                       0,                       0,                       1};
+    // clang-format on
+  }
+  if (node.scale.size() == 3)
+    for (int col = 0; col < 3; ++col)
+      for (int row = 0; row < 3; ++row) m[col * 4 + row] *= node.scale[std::size_t(col)];
+  if (node.translation.size() == 3)
+    for (int row = 0; row < 3; ++row) m[12 + row] = node.translation[std::size_t(row)];
+  return m;
+}
+
+struct Placed_mesh {
+  int mesh;
+  Matrix world;
+};
+
+// Deeper hierarchies are refused rather than risking the stack on a forged file.
+constexpr std::size_t kMaxNodeDepth = 1000;
+
+// `on_path` marks the node's ancestors, so that a cycle is found at once.
+void place_node(const std::string& path, const tinygltf::Model& model, int node,
+                const Matrix& parent, std::vector<char>& on_path, std::size_t depth,
+                std::vector<Placed_mesh>& placed) {
+  if (node < 0 || std::size_t(node) >= model.nodes.size())
+    fail(path, "node " + std::to_string(node) + " does not exist");
+  if (on_path[std::size_t(node)]) fail(path, "the node hierarchy has a cycle");
+  if (depth > kMaxNodeDepth)
+    fail(path, "the node hierarchy is deeper than " + std::to_string(kMaxNodeDepth));
+  const tinygltf::Node& n = model.nodes[std::size_t(node)];
+  const Matrix world = product(parent, local_matrix(n));
+  if (n.mesh >= 0) placed.push_back({n.mesh, world});
+  on_path[std::size_t(node)] = 1;
+  for (int child : n.children) place_node(path, model, child, world, on_path, depth + 1, placed);
+  on_path[std::size_t(node)] = 0;
+}
+
+std::vector<Placed_mesh> placed_meshes(const std::string& path, const tinygltf::Model& model) {
+  std::vector<Placed_mesh> placed;
+  if (model.scenes.empty()) {
+    for (std::size_t m = 0; m < model.meshes.size(); ++m) placed.push_back({int(m), kIdentity});
+    return placed;
+  }
+  const int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
+  if (std::size_t(scene) >= model.scenes.size())
+    fail(path, "scene " + std::to_string(scene) + " does not exist");
+  std::vector<char> on_path(model.nodes.size(), 0);
+  for (int node : model.scenes[std::size_t(scene)].nodes)
+    place_node(path, model, node, kIdentity, on_path, 0, placed);
+  return placed;
+}
+
+// One component, normalized integers mapped onto [0, 1] or [-1, 1] as the glTF spec says.
+double component(const unsigned char* at, int component_type, bool normalized) {
+  const auto read = [at](auto value) {
+    std::memcpy(&value, at, sizeof value);  // glTF is little-endian, as is every target here
+    return value;
+  };
+  const auto scaled = [normalized](double value, double largest) {
+    return normalized ? std::max(value / largest, -1.0) : value;
+  };
+  switch (component_type) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+      return scaled(read(std::int8_t()), 127);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      return scaled(read(std::uint8_t()), 255);
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+      return scaled(read(std::int16_t()), 32767);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+      return scaled(read(std::uint16_t()), 65535);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+      return read(std::uint32_t());
+    default:
+      return read(float());
+  }
+}
+
+// The values of accessor `index`, `components` per element, after checking that it is of one of
+// the allowed component types, normalized when of integers unless it holds indices (as the spec
+// has it), and that the file holds every element it declares.
+std::vector<double> accessor_values(const std::string& path, const tinygltf::Model& model,
+                                    int index, int type, const std::vector<int>& allowed,
+                                    const std::string& what, bool holds_indices = false) {
+  if (index < 0 || std::size_t(index) >= model.accessors.size())
+    fail(path, what + ": accessor " + std::to_string(index) + " does not exist");
+  const tinygltf::Accessor& accessor = model.accessors[std::size_t(index)];
+  const std::string name = what + " (accessor " + std::to_string(index) + ")";
+  if (accessor.type != type ||
+      std::find(allowed.begin(), allowed.end(), accessor.componentType) == allowed.end())
+    fail(path, name + ": unsupported element or component type");
+  if (accessor.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT &&
+      accessor.normalized == holds_indices)
+    fail(path, name + (holds_indices ? ": indices cannot be normalized"
+                                     : ": integer values must be normalized"));
+  if (accessor.sparse.isSparse) fail(path, name + ": sparse accessors are not supported");
+  if (accessor.bufferView < 0 || std::size_t(accessor.bufferView) >= model.bufferViews.size())
+    fail(path, name + ": no bufferView");
+  const tinygltf::BufferView& view = model.bufferViews[std::size_t(accessor.bufferView)];
+  if (view.buffer < 0 || std::size_t(view.buffer) >= model.buffers.size() ||
+      view.byteOffset > model.buffers[std::size_t(view.buffer)].data.size() ||
+      view.byteLength > model.buffers[std::size_t(view.buffer)].data.size() - view.byteOffset)
+    fail(path, name + ": its bufferView reaches past its buffer");
+  const std::size_t components = std::size_t(tinygltf::GetNumComponentsInType(std::uint32_t(type)));
+  const std::size_t size =
+      std::size_t(tinygltf::GetComponentSizeInBytes(std::uint32_t(accessor.componentType)));
+  const std::size_t element = size * components;
+  const std::size_t stride = view.byteStride > 0 ? view.byteStride : element;
+  const std::size_t count = accessor.count;
+  if (stride < element ||
+      (count > 0 &&
+       (accessor.byteOffset > view.byteLength || element > view.byteLength - accessor.byteOffset ||
+        count - 1 > (view.byteLength - accessor.byteOffset - element) / stride)))
+    fail(path, name + ": reaches past its bufferView");
+  const unsigned char* first =
+      model.buffers[std::size_t(view.buffer)].data.data() + view.byteOffset + accessor.byteOffset;
+  std::vector<double> values;
+  values.reserve(count * components);
+  for (std::size_t i = 0; i < count; ++i)
+    for (std::size_t c = 0; c < components; ++c)
+      values.push_back(
+          component(first + i * stride + c * size, accessor.componentType, accessor.normalized));
+  return values;
+}
+
+void check_finite(const std::string& path, const std::vector<double>& values,
+                  std::size_t components, const std::string& what) {
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (!std::isfinite(values[i]))
+      fail(path, what + " of vertex " + std::to_string(i / components) + " is not finite");
+}
+
+// Applies `m` to the points (w = 1) or directions (w = 0) stored three by three in `values`.
+void transform(const Matrix& m, double w, std::vector<double>& values) {
+  for (std::size_t i = 0; i + 2 < values.size(); i += 3) {
+    const double x = values[i], y = values[i + 1], z = values[i + 2];
+    for (std::size_t row = 0; row < 3; ++row)
+      values[i + row] = m[row] * x + m[4 + row] * y + m[8 + row] * z + m[12 + row] * w;
+  }
+}
+
+double determinant3(const Matrix& m) {
+  return m[0] * (m[5] * m[10] - m[9] * m[6]) - m[4] * (m[1] * m[10] - m[9] * m[2]) +
+         m[8] * (m[1] * m[6] - m[5] * m[2]);
+}
+
+// The transform of normals under `m`: its 3 x 3 part's cofactor matrix (the inverse transpose
+// times the determinant), turned to face outward when `m` mirrors.
+Matrix normal_matrix(const Matrix& m) {
+  const auto at = [&m](int row, int col) { return m[std::size_t(col * 4 + row)]; };
+  const double sign = determinant3(m) < 0 ? -1 : 1;
+  Matrix n{};
+  for (int row = 0; row < 3; ++row)
+    for (int col = 0; col < 3; ++col) {
+      const int r1 = (row + 1) % 3, r2 = (row + 2) % 3, c1 = (col + 1) % 3, c2 = (col + 2) % 3;
+      n[std::size_t(col * 4 + row)] = sign * (at(r1, c1) * at(r2, c2) - at(r1, c2) * at(r2, c1));
+    }
+  return n;
+}
+
+// The component types glTF allows for texture coordinates and colours.
+const std::vector<int> kFloatOrNormalized = {TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                             TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                             TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
+
+// Builds the soup primitive by primitive: a point for each glTF vertex a triangle uses, the
+// corner tables an entry for each glTF vertex.
+class Soup_builder {
+ public:
+  Soup_builder(const std::string& path, const tinygltf::Model& model)
+      : m_path(path), m_model(model) {}
+
+  void add_primitive(const tinygltf::Primitive& primitive, const Matrix& world,
+                     const std::string& what) {
+    const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
+    if (mode == TINYGLTF_MODE_POINTS || mode == TINYGLTF_MODE_LINE ||
+        mode == TINYGLTF_MODE_LINE_LOOP || mode == TINYGLTF_MODE_LINE_STRIP)
+      return;
+    if (mode != TINYGLTF_MODE_TRIANGLES)
+      fail(m_path, what + ": triangle strips and fans are not supported");
+    const auto position = primitive.attributes.find("POSITION");
+    if (position == primitive.attributes.end()) fail(m_path, what + ": no POSITION");
+    std::vector<double> positions =
+        accessor_values(m_path, m_model, position->second, TINYGLTF_TYPE_VEC3,
+                        {TINYGLTF_COMPONENT_TYPE_FLOAT}, what + " POSITION");
+    check_finite(m_path, positions, 3, what + ": the position");
+    const std::size_t vertices = positions.size() / 3;
+    const bool moved = world != kIdentity;
+    if (moved) transform(world, 1, positions);
+
+    Corner_tables& tables = m_soup.corners;
+    const std::array<std::size_t, 3> base = {tables.uvs.size(), tables.normals.size(),
+                                             tables.colors.size()};
+    const std::array<bool, 3> with = {read_uvs(primitive, vertices, what),
+                                      read_normals(primitive, vertices, moved, world, what),
+                                      read_colors(primitive, vertices, what)};
+    const std::array<std::vector<std::vector<std::size_t>>*, 3> lists = {
+        &tables.polygon_uvs, &tables.polygon_normals, &tables.polygon_colors};
+
+    const std::vector<std::size_t> corners = triangle_corners(primitive, vertices, what);
+    if (primitive.material >= 0 && std::size_t(primitive.material) >= m_model.materials.size())
+      fail(m_path, what + ": material " + std::to_string(primitive.material) + " does not exist");
+
+    std::vector<std::size_t> point_of_vertex(vertices, Corner_tables::kNoEntry);
+    // A mirroring transform turns the winding: two corners swap to keep the faces outward.
+    const bool mirrored = moved && determinant3(world) < 0;
+    for (std::size_t t = 0; t < corners.size(); t += 3) {
+      std::vector<std::size_t> polygon;
+      std::array<std::vector<std::size_t>, 3> entries;
+      for (std::size_t k : {std::size_t(0), mirrored ? std::size_t(2) : std::size_t(1),
+                            mirrored ? std::size_t(1) : std::size_t(2)}) {
+        const std::size_t v = corners[t + k];
+        if (point_of_vertex[v] == Corner_tables::kNoEntry) {
+          point_of_vertex[v] = m_soup.points.size();
+          m_soup.points.emplace_back(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]);
+        }
+        polygon.push_back(point_of_vertex[v]);
+        for (std::size_t kind = 0; kind < 3; ++kind)
+          entries[kind].push_back(with[kind] ? base[kind] + v : Corner_tables::kNoEntry);
+      }
+      m_soup.polygons.push_back(std::move(polygon));
+      for (std::size_t kind = 0; kind < 3; ++kind) lists[kind]->push_back(std::move(entries[kind]));
+      tables.polygon_materials.push_back(primitive.material >= 0 ? std::uint32_t(primitive.material)
+                                                                 : Corner_tables::kNoMaterial);
+    }
+    for (std::size_t kind = 0; kind < 3; ++kind) m_any[kind] = m_any[kind] || with[kind];
+  }
+
+  // The soup, its points joined where they are equal; the corner lists of a kind no primitive
+  // has are left empty, as the other readers leave them.
+  Polygon_soup soup() && {
+    Corner_tables& corners = m_soup.corners;
+    if (!m_any[0]) corners.polygon_uvs.clear();
+    if (!m_any[1]) corners.polygon_normals.clear();
+    if (!m_any[2]) corners.polygon_colors.clear();
+    if (std::all_of(corners.polygon_materials.begin(), corners.polygon_materials.end(),
+                    [](std::uint32_t m) { return m == Corner_tables::kNoMaterial; }))
+      corners.polygon_materials.clear();
+    else
+      for (std::size_t i = 0; i < m_model.materials.size(); ++i)
+        corners.material_names.push_back(m_model.materials[i].name.empty()
+                                             ? "material_" + std::to_string(i)
+                                             : m_model.materials[i].name);
+    join_equal_points(m_soup);
+    return std::move(m_soup);
+  }
+
+ private:
+  // The corners of the primitive's triangles, as glTF vertex numbers.
+  std::vector<std::size_t> triangle_corners(const tinygltf::Primitive& primitive,
+                                            std::size_t vertices, const std::string& what) {
+    std::vector<std::size_t> corners;
+    if (primitive.indices < 0) {
+      for (std::size_t v = 0; v < vertices; ++v) corners.push_back(v);
+    } else {
+      for (double index : accessor_values(
+               m_path, m_model, primitive.indices, TINYGLTF_TYPE_SCALAR,
+               {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
+               what + " indices", true)) {
+        if (index >= double(vertices))
+          fail(m_path, what + ": index " + std::to_string(std::size_t(index)) +
+                           " is out of range (" + std::to_string(vertices) + " vertices)");
+        corners.push_back(std::size_t(index));
+      }
+    }
+    if (corners.size() % 3 != 0)
+      fail(m_path, what + ": " + std::to_string(corners.size()) +
+                       " corners, not a whole number of triangles");
+    return corners;
+  }
+
+  bool read_uvs(const tinygltf::Primitive& primitive, std::size_t vertices,
+                const std::string& what) {
+    const auto uv = primitive.attributes.find("TEXCOORD_0");
+    if (uv == primitive.attributes.end()) return false;
+    const std::vector<double> values = accessor_values(
+        m_path, m_model, uv->second, TINYGLTF_TYPE_VEC2, kFloatOrNormalized, what + " TEXCOORD_0");
+    check_vertex_count(values.size() / 2, vertices, what + " TEXCOORD_0");
+    check_finite(m_path, values, 2, what + ": the texture coordinate");
+    for (std::size_t i = 0; i < values.size(); i += 2)
+      m_soup.corners.uvs.push_back({values[i], values[i + 1]});
+    return true;
+  }
+
+  bool read_normals(const tinygltf::Primitive& primitive, std::size_t vertices, bool moved,
+                    const Matrix& world, const std::string& what) {
+    const auto normal = primitive.attributes.find("NORMAL");
+    if (normal == primitive.attributes.end()) return false;
+    std::vector<double> values =
+        accessor_values(m_path, m_model, normal->second, TINYGLTF_TYPE_VEC3,
+                        {TINYGLTF_COMPONENT_TYPE_FLOAT}, what + " NORMAL");
+    check_vertex_count(values.size() / 3, vertices, what + " NORMAL");
+    check_finite(m_path, values, 3, what + ": the normal");
+    if (moved) transform(normal_matrix(world), 0, values);
+    for (std::size_t i = 0; i < values.size(); i += 3) {
+      Kernel::Vector_3 n(values[i], values[i + 1], values[i + 2]);
+      const double length = std::sqrt(n.squared_length());
+      if (moved && length > 0) n = n / length;  // a scaled node scales its normals too
+      m_soup.corners.normals.push_back(n);
+    }
+    return true;
+  }
+
+  // RGB (alpha 1) or RGBA, as the accessor's type says.
+  bool read_colors(const tinygltf::Primitive& primitive, std::size_t vertices,
+                   const std::string& what) {
+    const auto color = primitive.attributes.find("COLOR_0");
+    if (color == primitive.attributes.end()) return false;
+    const bool rgb = color->second >= 0 && std::size_t(color->second) < m_model.accessors.size() &&
+                     m_model.accessors[std::size_t(color->second)].type == TINYGLTF_TYPE_VEC3;
+    const std::size_t channels = rgb ? 3 : 4;
+    const std::vector<double> values = accessor_values(
+        m_path, m_model, color->second, rgb ? TINYGLTF_TYPE_VEC3 : TINYGLTF_TYPE_VEC4,
+        kFloatOrNormalized, what + " COLOR_0");
+    check_vertex_count(values.size() / channels, vertices, what + " COLOR_0");
+    check_finite(m_path, values, channels, what + ": the colour");
+    for (std::size_t i = 0; i < values.size(); i += channels)
+      m_soup.corners.colors.push_back(
+          {values[i], values[i + 1], values[i + 2], rgb ? 1.0 : values[i + 3]});
+    return true;
+  }
+
+  void check_vertex_count(std::size_t count, std::size_t vertices, const std::string& what) {
+    if (count != vertices)
+      fail(m_path, what + ": " + std::to_string(count) + " values for " + std::to_string(vertices) +
+                       " vertices");
+  }
+
+  const std::string& m_path;
+  const tinygltf::Model& m_model;
+  Polygon_soup m_soup;
+  std::array<bool, 3> m_any{};  // whether any primitive has texture coordinates, normals, colours
+};
+
+// What a written file keeps of the input: its looks, image files named by absolute path and
+// embedded images as bytes (the geometry's buffers are not needed any more).
+std::shared_ptr<const tinygltf::Model> kept_looks(tinygltf::Model& model, const std::string& path) {
+  auto looks = std::make_shared<tinygltf::Model>();
+  const fs::path folder = fs::absolute(path).parent_path();
+  for (tinygltf::Image& image : model.images) {
+    if (!image.uri.empty()) {
+      image.uri = (folder / image.uri).lexically_normal().string();
+      image.image.clear();  // the file stays where it is
+    }
+    image.bufferView = -1;
+  }
+  looks->materials = std::move(model.materials);
+  looks->textures = std::move(model.textures);
+  looks->samplers = std::move(model.samplers);
+  looks->images = std::move(model.images);
+  looks->extensionsUsed = std::move(model.extensionsUsed);
+  return looks;
+}
+
+// ---- Writing ---------------------------------------------------------------------------------
+
+// Appends `bytes` to buffer 0 as a bufferView of its own, at an offset that is a multiple of 4
+// (glTF aligns every accessor to its component size).
+int append_view(tinygltf::Model& model, const void* bytes, std::size_t size, int target) {
+  std::vector<unsigned char>& data = model.buffers[0].data;
+  data.resize((data.size() + 3) / 4 * 4, 0);
+  tinygltf::BufferView view;
+  view.buffer = 0;
+  view.byteOffset = data.size();
+  view.byteLength = size;
+  view.target = target;
+  const auto* first = static_cast<const unsigned char*>(bytes);
+  data.insert(data.end(), first, first + size);
+  model.bufferViews.push_back(view);
+  return int(model.bufferViews.size() - 1);
+}
+
+int append_accessor(tinygltf::Model& model, int view, std::size_t byte_offset, int component_type,
+                    int type, std::size_t count) {
+  tinygltf::Accessor accessor;
+  accessor.bufferView = view;
+  accessor.byteOffset = byte_offset;
+  accessor.componentType = component_type;
+  accessor.type = type;
+  accessor.count = count;
+  model.accessors.push_back(accessor);
+  return int(model.accessors.size() - 1);
+}
+
+// A float vertex attribute of every wedge; a value without a number (a corner without one)
+// becomes `none`, as glTF has no "none".
+int append_float_attribute(tinygltf::Model& model, std::vector<float> values, int type,
+                           float none = 0) {
+  for (float& v : values)
+    if (std::isnan(v)) v = none;
+  const std::size_t components = std::size_t(tinygltf::GetNumComponentsInType(std::uint32_t(type)));
+  const int view = append_view(model, values.data(), values.size() * sizeof(float),
+                               TINYGLTF_TARGET_ARRAY_BUFFER);
+  return append_accessor(model, view, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, type,
+                         values.size() / components);
+}
+
+// The input's looks, their image files named from `output_folder` and their embedded images
+// stored in buffer 0.
+void pass_looks_through(tinygltf::Model& model, const tinygltf::Model& looks,
+                        const fs::path& output_folder) {
+  model.materials = looks.materials;
+  model.textures = looks.textures;
+  model.samplers = looks.samplers;
+  model.extensionsUsed = looks.extensionsUsed;
+  for (tinygltf::Image image : looks.images) {
+    if (!image.uri.empty()) {
+      image.uri = fs::path(image.uri).lexically_relative(output_folder).string();
+    } else {
+      image.bufferView = append_view(model, image.image.data(), image.image.size(), 0);
+      image.image.clear();
+    }
+    image.as_is = false;
+    model.images.push_back(std::move(image));
+  }
+}
+
+}  // namespace
+
+Gltf_soup read_gltf(const std::string& path, bool binary) {
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(keep_image_bytes, nullptr);
+  tinygltf::Model model;
+  std::string error, warning;
+  bool loaded = false;
+  try {
+    loaded = binary ? loader.LoadBinaryFromFile(&model, &error, &warning, path)
+                    : loader.LoadASCIIFromFile(&model, &error, &warning, path);
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  if (!loaded)
+    fail(path,
+         "cannot parse: " + (error.empty() && warning.empty() ? std::string("not a valid glTF file")
+                                                              : one_line(error + warning)));
+  for (const std::string& extension : model.extensionsRequired)
+    fail(path, "requires the extension " + extension + ", which this reader does not support");
+
+  Soup_builder builder(path, model);
+  for (const Placed_mesh& placed : placed_meshes(path, model)) {
+    if (placed.mesh < 0 || std::size_t(placed.mesh) >= model.meshes.size())
+      fail(path, "mesh " + std::to_string(placed.mesh) + " does not exist");
+    const tinygltf::Mesh& mesh = model.meshes[std::size_t(placed.mesh)];
+    for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
+      builder.add_primitive(
+          mesh.primitives[p], placed.world,
+          "mesh " + std::to_string(placed.mesh) + " primitive " + std::to_string(p));
+  }
+  Gltf_soup read{std::move(builder).soup(), nullptr};
+  read.looks = kept_looks(model, path);
+  return read;
+}
+
+std::string gltf_bytes(const Mesh& mesh, bool binary, const Material_references& materials,
+                       const std::string& output_folder) {
+  const Wedge_mesh wedges = wedge_mesh(mesh);
+  tinygltf::Model model;
+  model.asset.version = "2.0";
+  model.asset.generator = "cgal_policies";
+  model.buffers.resize(1);
+  tinygltf::Primitive shape;
+  shape.mode = TINYGLTF_MODE_TRIANGLES;
+
+  std::vector<float> positions;
+  for (const Point& p : wedges.points)
+    for (double c : {p.x(), p.y(), p.z()}) positions.push_back(float(c));
+  const int position = append_float_attribute(model, positions, TINYGLTF_TYPE_VEC3);
+  shape.attributes["POSITION"] = position;
+  // The spec requires the bounds of the positions, which are these floats'.
+  tinygltf::Accessor& bounds = model.accessors[std::size_t(position)];
+  bounds.minValues.assign(3, std::numeric_limits<double>::infinity());
+  bounds.maxValues.assign(3, -std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    bounds.minValues[i % 3] = std::min(bounds.minValues[i % 3], double(positions[i]));
+    bounds.maxValues[i % 3] = std::max(bounds.maxValues[i % 3], double(positions[i]));
+  }
+  if (!wedges.normals.empty()) {
+    std::vector<float> normals;
+    for (const Kernel::Vector_3& n : wedges.normals)
+      for (double c : {n.x(), n.y(), n.z()}) normals.push_back(float(c));
+    shape.attributes["NORMAL"] = append_float_attribute(model, normals, TINYGLTF_TYPE_VEC3);
+  }
+  if (!wedges.uvs.empty()) {
+    std::vector<float> uvs;
+    for (const auto& uv : wedges.uvs)
+      for (double c : uv) uvs.push_back(float(c));
+    shape.attributes["TEXCOORD_0"] = append_float_attribute(model, uvs, TINYGLTF_TYPE_VEC2);
+  }
+  if (!wedges.colors.empty()) {
+    std::vector<float> colors;
+    for (const auto& color : wedges.colors)
+      for (double c : color) colors.push_back(float(c));
+    // A corner without a colour is white, which leaves the material's colour as it is.
+    shape.attributes["COLOR_0"] = append_float_attribute(model, colors, TINYGLTF_TYPE_VEC4, 1);
+  }
+
+  if (materials.gltf)
+    pass_looks_through(model, *materials.gltf, fs::absolute(output_folder).lexically_normal());
+  else
+    for (const std::string& name : materials.names) {
+      model.materials.emplace_back();
+      model.materials.back().name = name;
+    }
+
+  // One primitive per material, in the order of the material indices (none last), each of its
+  // triangles in the mesh's order; every primitive shares the wedges.
+  std::map<std::uint32_t, std::vector<std::uint32_t>> indices_of_material;
+  for (std::size_t t = 0; t < wedges.triangles.size(); ++t) {
+    const std::uint32_t material =
+        wedges.materials.empty() ? Corner_tables::kNoMaterial : wedges.materials[t];
+    auto& indices = indices_of_material[material];
+    indices.insert(indices.end(), wedges.triangles[t].begin(), wedges.triangles[t].end());
+  }
+  std::vector<std::uint32_t> all_indices;
+  for (const auto& group : indices_of_material)
+    all_indices.insert(all_indices.end(), group.second.begin(), group.second.end());
+  const int index_view =
+      append_view(model, all_indices.data(), all_indices.size() * sizeof(std::uint32_t),
+                  TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+  tinygltf::Mesh gltf_mesh;
+  std::size_t offset = 0;
+  for (const auto& [material, indices] : indices_of_material) {
+    tinygltf::Primitive primitive = shape;
+    primitive.indices =
+        append_accessor(model, index_view, offset * sizeof(std::uint32_t),
+                        TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, indices.size());
+    primitive.material = material < model.materials.size() ? int(material) : -1;
+    offset += indices.size();
+    gltf_mesh.primitives.push_back(std::move(primitive));
+  }
+  model.meshes.push_back(std::move(gltf_mesh));
+  model.nodes.emplace_back();
+  model.nodes.back().mesh = 0;
+  model.scenes.emplace_back();
+  model.scenes.back().nodes.push_back(0);
+  model.defaultScene = 0;
+
+  tinygltf::TinyGLTF writer;
+  // Every image is a uri or a bufferView already: none to encode.
+  writer.SetImageWriter(nullptr, nullptr);
+  std::ostringstream bytes;
+  writer.WriteGltfSceneToStream(&model, bytes, /*prettyPrint=*/true, binary);
+  return bytes.str();
+}
+
+}  // namespace io
+}  // namespace cgal_policies

@@ -1,0 +1,53 @@
+// glTF 2.0 files (.gltf and .glb), read and written through Debian's tinygltf (its shared library
+// holds the implementation, built with its default options: nlohmann/json, stb_image).
+#ifndef CGAL_POLICIES_IO_GLTF_IO_H
+#define CGAL_POLICIES_IO_GLTF_IO_H
+
+#include "Mesh_types.h"
+#include "mesh_io.h"
+#include "soup_readers.h"
+
+#include <memory>
+#include <string>
+
+namespace cgal_policies {
+namespace io {
+
+struct Gltf_soup {
+  Polygon_soup soup;
+  // The file's materials, textures, samplers and images, for a glTF file written from this mesh
+  // to keep: an image stored in the file (a bufferView or a data URI) keeps its bytes as they
+  // were, undecoded; an image in a file of its own keeps its uri, made absolute.
+  std::shared_ptr<const tinygltf::Model> looks;
+};
+
+// The file at `path`, a GLB when `binary`: every triangle primitive of every mesh that the
+// default scene reaches (the first scene when none is named; every mesh, untransformed, when the
+// file has no scene), its positions and normals taken through its node's world transform (the
+// winding turned where the transform mirrors). Points and lines are skipped, as they have no
+// surface; triangle strips and fans are bad input. Each glTF vertex gives the corner tables an
+// entry of its NORMAL, TEXCOORD_0 (float, or normalized unsigned byte or short) and COLOR_0 (RGB,
+// alpha 1, or RGBA; the same types), and each primitive its material (names: the material's name,
+// or "material_<i>" when it has none). The points are joined where exactly equal
+// (join_equal_points), so that the vertices a UV seam or a primitive boundary splits become one
+// vertex whose corners disagree. Throws Io_error (unreadable input, "<path>: <cause>") for a file
+// tinygltf cannot load (malformed JSON or GLB, a buffer file missing), a required extension, an
+// accessor or index out of range, a position, normal, texture coordinate or colour that is not
+// finite.
+Gltf_soup read_gltf(const std::string& path, bool binary);
+
+// The bytes of a glTF file (GLB when `binary`) of `mesh`: one vertex per wedge (Wedge_mesh.h),
+// float32 positions, normals, texture coordinates and RGBA colours (glTF has no doubles; a corner
+// without a value gets 0, or white for a colour, as glTF has no "none"), u32 indices, one
+// primitive per material in the order of the material indices. Materials: those of
+// `materials.gltf` when the mesh was read from glTF, passed through with their textures, samplers
+// and images (an image the input held is embedded, an image file is named by its path relative to
+// `output_folder`); otherwise a plain material named after each of `materials.names`. A .gltf file
+// holds its buffer as a base64 data URI.
+std::string gltf_bytes(const Mesh& mesh, bool binary, const Material_references& materials,
+                       const std::string& output_folder);
+
+}  // namespace io
+}  // namespace cgal_policies
+
+#endif  // CGAL_POLICIES_IO_GLTF_IO_H

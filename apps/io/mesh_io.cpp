@@ -1,0 +1,385 @@
+#include "mesh_io.h"
+
+#include "Io_error.h"
+#include "atomic_write.h"
+#include "clean_triangle_soup.h"
+#include "declared_counts.h"
+#include "gltf_io.h"
+#include "obj_writer.h"
+#include "ply_writer.h"
+#include "polygon_crossing.h"
+#include "soup_readers.h"
+
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/stitch_borders.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <cgal_policies/Corner_attributes.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+namespace fs = std::filesystem;
+
+namespace cgal_policies {
+namespace io {
+namespace {
+
+using Polygon = std::vector<std::size_t>;
+
+[[noreturn]] void fail_input(const std::string& path, const std::string& cause) {
+  throw Io_error(Io_error::Kind::unreadable_input, path + ": " + cause);
+}
+
+void check_readable_file(const std::string& path) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (!fs::exists(status)) fail_input(path, "cannot open: no such file");
+  if (fs::is_directory(status)) fail_input(path, "cannot open: is a directory");
+  std::ifstream probe(path, std::ios::binary);
+  if (!probe) fail_input(path, std::string("cannot open: ") + std::strerror(errno));
+  if (probe.peek() == std::ifstream::traits_type::eof()) fail_input(path, "empty file");
+  if (!has_supported_mesh_extension(path))
+    fail_input(path, "unsupported format '" + lower_extension(path) +
+                         "' (supported: .off, .obj, .ply, .stl, .gltf, .glb)");
+}
+
+// The whole file, read at once.
+std::string file_bytes(const std::string& path) {
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (!file) fail_input(path, std::string("cannot open: ") + std::strerror(errno));
+  std::string bytes;
+  std::error_code size_unknown;
+  const std::uintmax_t size = fs::file_size(path, size_unknown);
+  if (!size_unknown) bytes.reserve(std::size_t(size));
+  char buffer[1 << 16];
+  std::size_t got = 0;
+  while ((got = std::fread(buffer, 1, sizeof buffer, file)) > 0) bytes.append(buffer, got);
+  const bool failed = std::ferror(file) != 0;
+  std::fclose(file);
+  if (failed) fail_input(path, "cannot read: an I/O error");
+  return bytes;
+}
+
+void check_soup(const std::string& path, const std::vector<Point>& points,
+                const std::vector<Polygon>& polygons) {
+  if (polygons.empty()) fail_input(path, "no faces");
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Point& p = points[i];
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+      fail_input(path, "non-finite coordinate at vertex " + std::to_string(i));
+  }
+  for (std::size_t f = 0; f < polygons.size(); ++f)
+    for (std::size_t index : polygons[f])
+      if (index >= points.size())
+        fail_input(path, "face " + std::to_string(f) + " refers to vertex " +
+                             std::to_string(index) + " but there are only " +
+                             std::to_string(points.size()));
+}
+
+// Repairs a soup that is not a valid polygon mesh as it stands, and says what it did.
+void repair_soup(std::vector<Point>& points, std::vector<Polygon>& polygons,
+                 std::vector<std::string>& repairs) {
+  const std::size_t points_before = points.size(), polygons_before = polygons.size();
+  PMP::repair_polygon_soup(points, polygons);
+  if (points.size() < points_before)
+    repairs.push_back("merged or dropped " + std::to_string(points_before - points.size()) +
+                      " duplicate or unused points");
+  if (polygons.size() < polygons_before)
+    repairs.push_back("dropped " + std::to_string(polygons_before - polygons.size()) +
+                      " degenerate or duplicate faces");
+  const std::size_t points_before_orient = points.size();
+  if (!PMP::orient_polygon_soup(points, polygons) || points.size() > points_before_orient)
+    repairs.push_back("oriented the faces and split " +
+                      std::to_string(points.size() - points_before_orient) +
+                      " non-manifold vertices");
+  else
+    repairs.push_back("oriented the faces consistently");
+}
+
+std::vector<Point> face_corners(Mesh::Face_index f, const Mesh& mesh) {
+  std::vector<Point> corners;
+  for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+    corners.push_back(mesh.point(v));
+  return corners;
+}
+
+std::string unused_vertices_removed(std::size_t count) {
+  return "removed " + std::to_string(count) + " unused vertices";
+}
+
+using Attributes = cgal_policies::Corner_attributes<Point>;
+
+// The maps a soup's corner tables fill.
+Attributes::Kinds kinds_of(const Corner_tables& corners) {
+  return {!corners.polygon_uvs.empty(), !corners.polygon_normals.empty(),
+          !corners.polygon_colors.empty(), !corners.polygon_materials.empty()};
+}
+
+bool has_corner_attributes(const Corner_tables* corners) {
+  if (!corners) return false;
+  const Attributes::Kinds kinds = kinds_of(*corners);
+  return kinds.uvs || kinds.normals || kinds.colors || kinds.materials;
+}
+
+// Puts the attributes of `corners` on the mesh built from `polygons`, whose face i is polygon i
+// and whose vertex for point p is vertex_of_point[p].
+void set_corner_attributes(Mesh& mesh, const std::vector<Polygon>& polygons,
+                           const Corner_tables& corners,
+                           const std::vector<Mesh::Vertex_index>& vertex_of_point) {
+  const Attributes attributes = Attributes::add(mesh, kinds_of(corners));
+  for (std::size_t f = 0; f < polygons.size(); ++f) {
+    const Mesh::Face_index face(static_cast<Mesh::size_type>(f));
+    if (attributes.materials) (*attributes.materials)[face] = corners.polygon_materials[f];
+    for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(face), mesh)) {
+      std::size_t k = 0;
+      while (vertex_of_point[polygons[f][k]] != mesh.target(h)) ++k;
+      // The corner takes the table entry its polygon names, if the mesh has the map and it names
+      // one.
+      const auto copy = [&](const auto& map, const auto& polygon_entries, const auto& table) {
+        if (map && polygon_entries[f][k] != Corner_tables::kNoEntry)
+          (*map)[h] = table[polygon_entries[f][k]];
+      };
+      copy(attributes.uvs, corners.polygon_uvs, corners.uvs);
+      copy(attributes.normals, corners.polygon_normals, corners.normals);
+      copy(attributes.colors, corners.polygon_colors, corners.colors);
+    }
+  }
+}
+
+// Gives the triangles of a polygon the attributes of the polygon's corners at the same vertices,
+// and the polygon's material. CGAL copies the visitor: the copies share one record.
+class Corner_attribute_copier : public PMP::Triangulate_faces::Default_visitor<Mesh> {
+ public:
+  Corner_attribute_copier(Mesh& mesh, const Attributes& attributes)
+      : m_record(std::make_shared<Record>(Record{&mesh, attributes, {}, {}, {}})) {}
+
+  void before_subface_creations(Mesh::Face_index polygon) {
+    Record& r = *m_record;
+    r.vertices.clear();
+    r.values.clear();
+    r.material = r.attributes.materials ? (*r.attributes.materials)[polygon] : 0;
+    for (const auto h : CGAL::halfedges_around_face(r.mesh->halfedge(polygon), *r.mesh)) {
+      r.vertices.push_back(r.mesh->target(h));
+      r.values.push_back(r.attributes.values(h));
+    }
+  }
+
+  void after_subface_created(Mesh::Face_index triangle) {
+    Record& r = *m_record;
+    if (r.attributes.materials) (*r.attributes.materials)[triangle] = r.material;
+    for (const auto h : CGAL::halfedges_around_face(r.mesh->halfedge(triangle), *r.mesh)) {
+      const std::size_t k = std::size_t(
+          std::find(r.vertices.begin(), r.vertices.end(), r.mesh->target(h)) - r.vertices.begin());
+      r.attributes.set_values(h, r.values[k]);
+    }
+  }
+
+ private:
+  struct Record {
+    Mesh* mesh;
+    Attributes attributes;
+    std::vector<Mesh::Vertex_index> vertices;
+    std::vector<Attributes::Values> values;
+    std::uint32_t material;
+  };
+  std::shared_ptr<Record> m_record;
+};
+
+// The general path, for soups that are not a clean triangle mesh as they stand: CGAL's soup
+// repair when the soup is not a polygon mesh, then stitching and triangulation.
+Mesh repaired_triangle_mesh(const std::string& path, std::vector<Point>& points,
+                            std::vector<Polygon>& polygons, const Corner_tables* corners,
+                            std::vector<std::string>& repairs) {
+  if (!PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
+    repair_soup(points, polygons, repairs);
+    if (has_corner_attributes(corners))
+      repairs.push_back(
+          "dropped the texture coordinates, normals and materials (the repair does "
+          "not carry them)");
+    corners = nullptr;
+  }
+  if (polygons.empty()) fail_input(path, "no faces left after dropping degenerate ones");
+
+  Mesh mesh;
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  if (has_corner_attributes(corners)) {
+    std::vector<Mesh::Vertex_index> vertex_of_point;
+    for (std::size_t p = 0; p < points.size(); ++p)
+      vertex_of_point.emplace_back(static_cast<Mesh::size_type>(p));
+    set_corner_attributes(mesh, polygons, *corners, vertex_of_point);
+  }
+  // Orienting cuts the soup wherever it is not manifold, more than it must; stitching puts back
+  // together the border edges that can be joined without breaking manifoldness.
+  if (!repairs.empty()) {
+    if (const std::size_t stitched = PMP::stitch_borders(mesh))
+      repairs.push_back("stitched " + std::to_string(stitched) +
+                        " border edge pairs back together");
+  }
+  const std::size_t isolated = PMP::remove_isolated_vertices(mesh);
+  if (isolated > 0) repairs.push_back(unused_vertices_removed(isolated));
+  if (!CGAL::is_triangle_mesh(mesh)) {
+    std::size_t polygons_split = 0;
+    for (auto f : faces(mesh)) {
+      if (CGAL::degree(f, mesh) == 3) continue;
+      ++polygons_split;
+      const std::string polygon = "polygon " + std::to_string(std::size_t(f));
+      const Kernel::Vector_3 normal = PMP::compute_face_normal(f, mesh);
+      if (normal == CGAL::NULL_VECTOR) fail_input(path, polygon + " has no area");
+      if (polygon_crosses_itself(face_corners(f, mesh), normal))
+        fail_input(path, polygon + " crosses itself");
+    }
+    const Attributes attributes(mesh);
+    if (!PMP::triangulate_faces(
+            mesh, CGAL::parameters::visitor(Corner_attribute_copier(mesh, attributes))))
+      fail_input(path, "a polygon could not be triangulated");
+    repairs.push_back("triangulated " + std::to_string(polygons_split) + " polygons");
+  }
+  mesh.collect_garbage();
+  if (!CGAL::is_valid_polygon_mesh(mesh)) fail_input(path, "not a valid polygon mesh");
+  return mesh;
+}
+
+bool is_gltf(const std::string& extension) { return extension == ".gltf" || extension == ".glb"; }
+
+// The soup of a file of any format but STL, and its glTF looks when it is one.
+Polygon_soup read_soup(const std::string& path, const std::string& extension,
+                       std::shared_ptr<const tinygltf::Model>& gltf_looks) {
+  if (is_gltf(extension)) {
+    Gltf_soup read = read_gltf(path, extension == ".glb");
+    gltf_looks = std::move(read.looks);
+    return std::move(read.soup);
+  }
+  const std::string bytes = file_bytes(path);
+  return extension == ".obj"   ? parse_obj(path, bytes)
+         : extension == ".off" ? parse_off(path, bytes)
+                               : parse_ply(path, bytes);
+}
+
+}  // namespace
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+bool writes_corner_attributes(const std::string& path) {
+  const std::string extension = lower_extension(path);
+  return extension == ".obj" || extension == ".ply" || is_gltf(extension);
+}
+
+bool has_supported_mesh_extension(const std::string& path) {
+  static const char* const kExtensions[] = {".off", ".obj", ".ply", ".stl", ".gltf", ".glb"};
+  const std::string ext = lower_extension(path);
+  return std::any_of(std::begin(kExtensions), std::end(kExtensions),
+                     [&](const char* known) { return ext == known; });
+}
+
+Mesh read_triangle_mesh(const std::string& path, Read_report* report,
+                        Corner_attribute_reading attributes) {
+  check_readable_file(path);
+  check_declared_counts(path);
+  const std::string extension = lower_extension(path);
+  if (extension != ".stl") {
+    std::shared_ptr<const tinygltf::Model> gltf_looks;
+    Polygon_soup soup = read_soup(path, extension, gltf_looks);
+    if (attributes == Corner_attribute_reading::drop)
+      return triangle_mesh_from_soup(path, soup.points, soup.polygons, report);
+    const Corner_tables& tables = soup.corners;
+    if (extension == ".ply" &&
+        !(tables.uvs.empty() && tables.normals.empty() && tables.colors.empty()))
+      join_equal_points(soup);
+    Mesh mesh = triangle_mesh_from_soup(path, soup.points, soup.polygons, report, &soup.corners);
+    if (report && Attributes(mesh).materials) {
+      const fs::path folder = fs::absolute(path).parent_path();
+      for (const std::string& library : soup.corners.material_libraries)
+        report->materials.libraries.push_back((folder / library).lexically_normal().string());
+      report->materials.names = soup.corners.material_names;
+      report->materials.gltf = std::move(gltf_looks);
+    }
+    return mesh;
+  }
+  std::vector<Point> points;
+  std::vector<Polygon> polygons;
+  bool parsed = false;
+  try {
+    parsed = CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false));
+  } catch (const std::exception& e) {
+    fail_input(path, std::string("cannot parse: ") + e.what());
+  }
+  if (!parsed)
+    fail_input(path, "cannot parse: not a valid " + extension + " file (malformed or truncated)");
+  return triangle_mesh_from_soup(path, points, polygons, report);
+}
+
+Mesh triangle_mesh_from_soup(const std::string& path, std::vector<Point>& points,
+                             std::vector<Polygon>& polygons, Read_report* report,
+                             const Corner_tables* corners) {
+  check_soup(path, points, polygons);
+  Mesh mesh;
+  std::size_t unused_points = 0;
+  std::vector<std::string> repairs;
+  std::vector<Mesh::Vertex_index> vertex_of_point;
+  if (build_mesh_from_clean_triangles(
+          points, polygons, mesh, unused_points,
+          has_corner_attributes(corners) ? &vertex_of_point : nullptr)) {
+    if (unused_points > 0) repairs.push_back(unused_vertices_removed(unused_points));
+    if (has_corner_attributes(corners))
+      set_corner_attributes(mesh, polygons, *corners, vertex_of_point);
+  } else {
+    mesh = repaired_triangle_mesh(path, points, polygons, corners, repairs);
+  }
+  if (report) report->repairs = repairs;
+  return mesh;
+}
+
+void write_mesh_atomically(const Mesh& mesh, const std::string& path,
+                           const Material_references& materials) {
+  const std::string extension = lower_extension(path);
+  const auto write_bytes = [&path](const std::string& bytes) {
+    write_atomically(path, [&](const std::string& temporary) {
+      std::ofstream file(temporary, std::ios::binary);
+      file.write(bytes.data(), std::streamsize(bytes.size()));
+      return bool(file.flush());
+    });
+  };
+  const fs::path folder = fs::absolute(path).parent_path();
+  if (is_gltf(extension)) {
+    write_bytes(gltf_bytes(mesh, extension == ".glb", materials, folder.string()));
+    return;
+  }
+  if (extension == ".obj" && Attributes(mesh).any()) {
+    std::vector<std::string> libraries;
+    for (const std::string& library : materials.libraries)
+      libraries.push_back(fs::path(library).lexically_relative(folder).string());
+    write_bytes(obj_text(mesh, libraries, materials.names));
+    return;
+  }
+  if (extension == ".ply" && Attributes(mesh).any_corner_values()) {
+    write_bytes(ply_bytes(wedge_mesh(mesh)));
+    return;
+  }
+  write_atomically(path, [&](const std::string& temporary) {
+    return CGAL::IO::write_polygon_mesh(temporary, mesh, CGAL::parameters::stream_precision(17));
+  });
+}
+
+}  // namespace io
+}  // namespace cgal_policies

@@ -1,0 +1,77 @@
+// Reading and writing meshes for every app: OBJ, OFF, PLY, STL and glTF, polygon soups repaired,
+// polygons triangulated, and atomic writes that never leave a partial file or touch the input.
+#ifndef CGAL_POLICIES_IO_MESH_IO_H
+#define CGAL_POLICIES_IO_MESH_IO_H
+
+#include "Io_error.h"
+#include "Mesh_types.h"
+#include "soup_readers.h"
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace tinygltf {
+class Model;
+}
+
+namespace cgal_policies {
+namespace io {
+
+// What the faces of a mesh read from an OBJ or glTF file refer to outside it: the material
+// libraries (paths resolved against the folder of the file read), the material names that the
+// face material map (cgal_policies::Corner_attributes) indexes, and from a glTF file its
+// materials themselves, with their textures and images (gltf_io.h), for a glTF output to keep.
+struct Material_references {
+  std::vector<std::string> libraries, names;
+  std::shared_ptr<const tinygltf::Model> gltf;
+};
+
+struct Read_report {
+  std::vector<std::string> repairs;  // what was repaired, one phrase each; empty when nothing was
+  Material_references materials;     // when the corner attributes were kept
+};
+
+// Whether the reader puts a file's texture coordinates, normals, colours and materials on the mesh
+// (cgal_policies::Corner_attributes), or reads the surface alone. OBJ files carry all four
+// (colours per point), PLY files per-vertex normals, texture coordinates and colours, glTF files
+// all four per vertex; the others none.
+enum class Corner_attribute_reading { drop, keep };
+
+// The file's extension in lower case, with its dot (".obj"); empty when it has none.
+std::string lower_extension(const std::string& path);
+
+bool has_supported_mesh_extension(const std::string& path);
+
+// Whether write_mesh_atomically writes a mesh's corner attributes to a file of this name (OBJ,
+// PLY, glTF).
+bool writes_corner_attributes(const std::string& path);
+
+// Reads a triangle mesh; throws Io_error (unreadable input, "<path>: <cause>") when it cannot.
+Mesh read_triangle_mesh(const std::string& path, Read_report* report = nullptr,
+                        Corner_attribute_reading attributes = Corner_attribute_reading::drop);
+
+// The reader's second half: checks the soup (faces, finite points, indices in range); builds the
+// mesh directly when the soup is a clean triangle mesh, otherwise repairs it when it is not a
+// polygon mesh as it stands, and triangulates. Errors name `source`, as above. The corner
+// attributes of `corners`, when given, go onto the mesh (the triangles of a polygon get the
+// polygon's); a soup that needs repair loses them, and the report says so.
+Mesh triangle_mesh_from_soup(const std::string& source, std::vector<Point>& points,
+                             std::vector<std::vector<std::size_t>>& polygons,
+                             Read_report* report = nullptr, const Corner_tables* corners = nullptr);
+
+// Writes by extension with full precision, all or nothing (write_atomically); throws
+// Io_error (unwritable output) and leaves no file behind when that fails. An OBJ file gets the
+// mesh's corner attributes too (obj_text): its texture coordinates and normals per corner, colours
+// per point, and `materials` (mtllib paths made relative to the file's folder, a usemtl line
+// wherever the material changes). A PLY file gets a vertex per wedge with its values (ply_bytes).
+// A glTF file (.gltf, .glb) is always written by gltf_bytes (gltf_io.h), with whatever the mesh
+// carries.
+void write_mesh_atomically(const Mesh& mesh, const std::string& path,
+                           const Material_references& materials = {});
+
+}  // namespace io
+}  // namespace cgal_policies
+
+#endif  // CGAL_POLICIES_IO_MESH_IO_H

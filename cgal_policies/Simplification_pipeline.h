@@ -1,0 +1,183 @@
+// Simplification_pipeline: the whole pass order of this suite on a CGAL::Surface_mesh, the one
+// place that orders the passes (docs/pipeline.md). Each pass runs only when its options ask for it:
+//   1. merge           Border_pair_contraction stitches border pairs closer than merge_distance
+//   2. components      components of fewer than min_component faces go, but the largest
+//   3. simplification  the policy down to the target, carrying the corner attributes
+//                      (Corner_attributes.h) with their seams, within max_error and the time limit
+//   4. pieces          when no collapse is left short of the target, whole components go
+//   5. smoothing       Laplacian_smoother, within the run's bound when asked
+//   6. fit             Two_sided_fitter against the input, within the run's bound
+// The mesh is left compact (garbage collected). Options: Simplification_options (every default in
+// the library); the report: Simplification_report. Deterministic: the same mesh and options give
+// the same bytes. The interruption callback stops the run between collapses or between passes,
+// the mesh valid and simplified as far as it got.
+// Usage:
+//   cgal_policies::Simplification_options options;  // the library's default pipeline
+//   options.target = cgal_policies::Face_target::ratio(0.1);
+//   const cgal_policies::Simplification_report report =
+//       cgal_policies::Simplification_pipeline<Point>(options).run(mesh);
+#ifndef CGAL_POLICIES_SIMPLIFICATION_PIPELINE_H
+#define CGAL_POLICIES_SIMPLIFICATION_PIPELINE_H
+
+#include <cgal_policies/Border_pair_contraction.h>
+#include <cgal_policies/Corner_attributes.h>
+#include <cgal_policies/Hausdorff_move_guard.h>
+#include <cgal_policies/Laplacian_smoother.h>
+#include <cgal_policies/Simplification_options.h>
+#include <cgal_policies/Simplification_report.h>
+#include <cgal_policies/internal/fit_carrying_corner_values.h>
+#include <cgal_policies/internal/run_cgal_policies.h>
+#include <cgal_policies/internal/run_fast_policy.h>
+#include <cgal_policies/internal/run_hausdorff_policy.h>
+#include <cgal_policies/internal/run_quadric_policies.h>
+#include <cgal_policies/small_components.h>
+
+#include <CGAL/assertions.h>
+
+#include <chrono>
+#include <cstddef>
+#include <optional>
+
+namespace cgal_policies {
+
+template <class Point>
+class Simplification_pipeline {
+ public:
+  using Mesh = CGAL::Surface_mesh<Point>;
+
+  explicit Simplification_pipeline(const Simplification_options& options = {})
+      : m_options(options) {
+    CGAL_precondition(options.max_normal_angle_deg >= 0 && options.max_normal_angle_deg <= 180);
+    CGAL_precondition(options.max_error >= 0 && options.time_limit_seconds >= 0);
+    CGAL_precondition(runs_edge_collapse(options.policy) ||
+                      (options.max_error == 0 && options.time_limit_seconds == 0));
+    CGAL_precondition(options.merge_distance >= 0);
+    CGAL_precondition(options.smoothing.iterations >= 0);
+    CGAL_precondition(!options.smoothing.bounded || options.two_sided_bound() > 0);
+  }
+
+  // Runs every pass on `mesh`. The passes that measure against the input (fit, bounded smoothing)
+  // keep a copy of it.
+  Simplification_report run(Mesh& mesh) const {
+    const bool needs_input = m_options.fit || m_options.smoothing.bounded;
+    return needs_input ? run(mesh, Mesh(mesh)) : run(mesh, Mesh());
+  }
+
+  // The same, with the caller's copy of the input (`mesh` as it was), for a caller that keeps one
+  // anyway; it may be empty when neither the fit nor bounded smoothing runs.
+  Simplification_report run(Mesh& mesh, const Mesh& input) const {
+    Simplification_report report;
+    report.input_faces = mesh.number_of_faces();
+    report.input_vertices = mesh.number_of_vertices();
+    report.target_faces = m_options.target.of(report.input_faces);
+    report.bound = m_options.two_sided_bound();
+    // 1-2: repairs before the run; the target stays the one asked of the input.
+    if (m_options.merge_distance > 0)
+      timed(report, Simplification_pass::merge, [&] {
+        report.merged = Border_pair_contraction(m_options.merge_distance)(mesh);
+        if (report.merged.stitched_edges > 0) mesh.collect_garbage();
+      });
+    if (m_options.min_component > 1)
+      timed(report, Simplification_pass::components, [&] {
+        report.dropped_before = drop_components_smaller_than(mesh, m_options.min_component);
+      });
+    // 3: the policy; its seconds exclude the garbage collection after it.
+    timed(report, Simplification_pass::simplification, [&] {
+      const internal::Policy_outcome outcome = run_policy(mesh, report.target_faces);
+      report.stop_reason = outcome.stop_reason;
+      report.attributes_carried = outcome.attributes_carried;
+    });
+    mesh.collect_garbage();
+    if (m_options.pass_done) m_options.pass_done(Simplification_pass::simplification);
+    // 4-6: after the run, unless it was interrupted.
+    if (m_options.drop_small_pieces && report.stop_reason == Stop_reason::no_collapse_left)
+      timed(report, Simplification_pass::pieces, [&] {
+        report.dropped_after = drop_smallest_components_until(mesh, report.target_faces);
+      });
+    if (m_options.smoothing.iterations > 0 && !interrupted(report))
+      timed(report, Simplification_pass::smoothing,
+            [&] { report.smoothing_refused_moves = smooth(mesh, input, report.bound); });
+    if (m_options.fit && !interrupted(report))
+      timed(report, Simplification_pass::fit, [&] {
+        Two_sided_fit_options fit = m_options.fit_options;
+        fit.max_normal_angle_deg = m_options.max_normal_angle_deg;
+        fit.tolerance = report.bound;
+        report.fit = internal::fit_carrying_corner_values(mesh, input, fit);
+        report.fitted = true;
+      });
+    report.output_faces = mesh.number_of_faces();
+    report.output_vertices = mesh.number_of_vertices();
+    return report;
+  }
+
+  const Simplification_options& options() const { return m_options; }
+
+ private:
+  template <class Pass>
+  void timed(Simplification_report& report, Simplification_pass pass, const Pass& run) const {
+    const auto start = std::chrono::steady_clock::now();
+    run();
+    report.pass_seconds[std::size_t(pass)] =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (pass != Simplification_pass::simplification && m_options.pass_done)
+      m_options.pass_done(pass);
+  }
+
+  // Asks the callback between passes; an interrupted run reports it and skips the rest.
+  bool interrupted(Simplification_report& report) const {
+    if (report.stop_reason == Stop_reason::interrupted) return true;
+    if (!m_options.interrupted || !m_options.interrupted()) return false;
+    report.stop_reason = Stop_reason::interrupted;
+    return true;
+  }
+
+  internal::Policy_outcome run_policy(Mesh& mesh, std::size_t target) const {
+    switch (m_options.policy) {
+      case Simplification_policy::gh:
+        return internal::run_gh(mesh, target, m_options);
+      case Simplification_policy::gh_probabilistic:
+        return internal::run_gh_probabilistic(mesh, target, m_options);
+      case Simplification_policy::lt:
+        return internal::run_lt(mesh, target, m_options);
+      case Simplification_policy::classic:
+        return internal::run_classic(mesh, target, m_options);
+      case Simplification_policy::curvature:
+        return internal::run_curvature(mesh, target, m_options);
+      case Simplification_policy::fusion:
+        return internal::run_fusion(mesh, target, m_options);
+      case Simplification_policy::fast:
+        return internal::run_fast(mesh, target, m_options);
+      case Simplification_policy::hausdorff:
+        return internal::run_hausdorff(mesh, target, m_options);
+      case Simplification_policy::attributes:
+        return internal::run_attributes(mesh, target, m_options);
+    }
+    CGAL_error_msg("unknown Simplification_policy");
+    return {};
+  }
+
+  // Returns the moves a bounded smoothing refused.
+  std::size_t smooth(Mesh& mesh, const Mesh& input, double bound) const {
+    const Smoothing_options& s = m_options.smoothing;
+    const Laplacian_smoother<Mesh> smoother(s.rate, s.weights, s.method);
+    if (!s.bounded) {
+      smoother.smooth(mesh, s.iterations);
+      return 0;
+    }
+    const Hausdorff_move_guard<Mesh> guard(input, mesh, bound);
+    return smoother.smooth(mesh, s.iterations, guard);
+  }
+
+  Simplification_options m_options;
+};
+
+// Simplification_pipeline<Point>(options).run(mesh).
+template <class Point>
+Simplification_report simplify(CGAL::Surface_mesh<Point>& mesh,
+                               const Simplification_options& options = {}) {
+  return Simplification_pipeline<Point>(options).run(mesh);
+}
+
+}  // namespace cgal_policies
+
+#endif  // CGAL_POLICIES_SIMPLIFICATION_PIPELINE_H

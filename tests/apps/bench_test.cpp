@@ -1,0 +1,310 @@
+// simplify_bench end to end: the quick preset writes its report files with one row per run and
+// finite numbers, and its gh rows are exactly what simplify --policy gh --measure prints.
+#include "app_types.h"
+#include "io/mesh_io.h"
+#include "pipeline/policy_registry.h"
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using Row = std::map<std::string, std::string>;
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// One CSV line, with "quoted, cells" and doubled quotes inside them.
+std::vector<std::string> split_csv_line(const std::string& line) {
+  std::vector<std::string> cells(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+      cells.back() += '"';
+      ++i;
+    } else if (c == '"') {
+      quoted = !quoted;
+    } else if (c == ',' && !quoted) {
+      cells.emplace_back();
+    } else {
+      cells.back() += c;
+    }
+  }
+  return cells;
+}
+
+std::vector<Row> read_csv(const fs::path& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> header = split_csv_line(line);
+  std::vector<Row> rows;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> cells = split_csv_line(line);
+    EXPECT_EQ(cells.size(), header.size()) << line;
+    Row row;
+    for (std::size_t i = 0; i < std::min(cells.size(), header.size()); ++i)
+      row[header[i]] = cells[i];
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+bool parses_as_finite(const std::string& text) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  return !text.empty() && *end == '\0' && std::isfinite(v);
+}
+
+// A number field of a flat JSON object as printed by simplify --json.
+double json_number(const std::string& json, const std::string& key) {
+  const std::string pattern = "\"" + key + "\": ";
+  const std::size_t at = json.find(pattern);
+  EXPECT_NE(at, std::string::npos) << key;
+  return at == std::string::npos ? NAN : std::strtod(json.c_str() + at + pattern.size(), nullptr);
+}
+
+std::size_t count_occurrences(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+int run_command(const std::string& command) { return std::system(command.c_str()); }
+
+class BenchQuickPreset : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    if (test_meshes::real_meshes_skipped()) return;
+    s_out = fs::temp_directory_path() / ("cgal_policies_bench_test_" + std::to_string(::getpid()));
+    fs::remove_all(s_out);
+    s_exit =
+        run_command(std::string(CGAL_POLICIES_BIN_DIR) + "/simplify_bench --preset quick --data '" +
+                    CGAL_POLICIES_DATA_DIR + "' --out '" + s_out.string() + "' > '" +
+                    (s_out.string() + ".stdout") + "' 2> '" + (s_out.string() + ".stderr") + "'");
+    s_rows = read_csv(s_out / "runs.csv");
+  }
+  static void TearDownTestSuite() {
+    if (s_out.empty()) return;
+    fs::remove_all(s_out);
+    fs::remove(s_out.string() + ".stdout");
+    fs::remove(s_out.string() + ".stderr");
+  }
+  void SetUp() override {
+    SKIP_IF_REAL_MESHES_ARE_OFF();
+    ASSERT_EQ(s_exit, 0) << read_text(s_out.string() + ".stderr");
+    ASSERT_FALSE(s_rows.empty());
+  }
+
+  static fs::path s_out;
+  static int s_exit;
+  static std::vector<Row> s_rows;
+};
+
+fs::path BenchQuickPreset::s_out;
+int BenchQuickPreset::s_exit = -1;
+std::vector<Row> BenchQuickPreset::s_rows;
+
+TEST_F(BenchQuickPreset, CsvHasOneRowPerCaseAndPolicyWithFiniteNumbers) {
+  const std::set<std::string> text_columns = {"mesh",        "target", "label", "policy",
+                                              "stop_reason", "valid",  "closed"};
+  // Without --attributes, the corner-attribute columns stay empty (BenchAttributes fills them).
+  const std::set<std::string> attribute_columns = {
+      "attributes",           "uv_mean_rel",  "uv_max_rel",   "normal_angle_mean_deg",
+      "normal_angle_max_deg", "color_mean",   "color_max",    "seam_edges_a",
+      "seam_edges_b",         "seam_loops_a", "seam_loops_b", "flipped_uv_faces"};
+  std::set<std::pair<std::string, std::string>> cases;
+  std::set<std::string> policies;
+  std::set<std::vector<std::string>> runs;
+  for (const Row& row : s_rows) {
+    for (const auto& [column, cell] : row) {
+      if (attribute_columns.count(column)) {
+        EXPECT_EQ(cell, "") << column;
+      } else if (!text_columns.count(column)) {
+        EXPECT_TRUE(parses_as_finite(cell)) << column << " = " << cell;
+      }
+    }
+    EXPECT_TRUE(row.at("valid") == "true" || row.at("valid") == "false");
+    cases.insert({row.at("mesh"), row.at("target_faces")});
+    policies.insert(row.at("policy"));
+    EXPECT_TRUE(runs.insert({row.at("mesh"), row.at("target_faces"), row.at("policy")}).second)
+        << "two rows for one run: " << row.at("mesh") << " " << row.at("policy");
+  }
+  EXPECT_EQ(s_rows.size(), cases.size() * policies.size());
+  for (const apps::Policy_entry& p : apps::policy_registry())
+    EXPECT_TRUE(policies.count(p.name)) << "policy " << p.name << " did not run";
+}
+
+TEST_F(BenchQuickPreset, JsonMarkdownAndPlotsCoverEveryRun) {
+  const std::string json = read_text(s_out / "runs.json");
+  EXPECT_EQ(count_occurrences(json, "\"policy\": "), s_rows.size());
+  EXPECT_EQ(json.find("null"), std::string::npos);
+
+  const std::string markdown = read_text(s_out / "report.md");
+  EXPECT_EQ(read_text(s_out.string() + ".stdout"), markdown);
+  std::set<std::string> meshes;
+  for (const Row& row : s_rows) meshes.insert(row.at("mesh"));
+  EXPECT_EQ(count_occurrences(markdown, "\n| target → faces |"), meshes.size());
+  std::size_t table_rows = 0;
+  for (const Row& row : s_rows)
+    table_rows +=
+        count_occurrences(markdown, " → " + row.at("target_faces") + " | " + row.at("policy") +
+                                        " | " + row.at("output_faces"));
+  EXPECT_EQ(table_rows, s_rows.size());
+  for (const std::string& mesh : meshes)
+    EXPECT_NE(markdown.find("- " + mesh + ": "), std::string::npos) << "no summary for " << mesh;
+
+  if (run_command("command -v gnuplot > /dev/null 2>&1") != 0) return;  // plots are optional
+  for (std::string stem : meshes) {
+    std::replace(stem.begin(), stem.end(), '.', '_');
+    for (const char* plot : {"_error.png", "_time.png"}) {
+      const fs::path png = s_out / (stem + plot);
+      EXPECT_TRUE(fs::exists(png) && fs::file_size(png) > 0) << png;
+    }
+  }
+}
+
+TEST_F(BenchQuickPreset, GhRowsMatchSimplify) {
+  std::size_t checked = 0;
+  for (const Row& row : s_rows) {
+    if (row.at("policy") != "gh") continue;
+    const fs::path output = s_out / ("gh_" + std::to_string(checked++) + ".off");
+    const std::string json_path = output.string() + ".json";
+    const double ratio = std::stod(row.at("target_ratio"));
+    const std::string target =
+        ratio > 0 ? row.at("target_ratio") : "--faces " + row.at("target_faces");
+    ASSERT_EQ(run_command(std::string(CGAL_POLICIES_BIN_DIR) + "/simplify '" +
+                          test_meshes::data_file(row.at("mesh")) + "' '" + output.string() + "' " +
+                          target + " --policy gh --measure --json --quiet --samples " +
+                          row.at("samples") + " > '" + json_path + "'"),
+              0);
+    const std::string json = read_text(json_path);
+    EXPECT_EQ(json_number(json, "target_faces"), std::stod(row.at("target_faces")));
+    EXPECT_EQ(json_number(json, "output_faces"), std::stod(row.at("output_faces")));
+    EXPECT_EQ(json_number(json, "output_vertices"), std::stod(row.at("output_vertices")));
+    for (const char* field : {"hausdorff", "mean_a_to_b", "mean_b_to_a", "rms", "min_angle_deg"})
+      EXPECT_EQ(json_number(json, field), std::stod(row.at(field))) << field;
+  }
+  EXPECT_GT(checked, 0u);
+}
+
+// A limit that has passed before the first collapse: every edge-collapse run stops at once, is
+// marked in the report and is not repeated.
+TEST(BenchTimeLimit, StopsARunWhereItIsAndDoesNotRepeatIt) {
+  const fs::path out =
+      fs::temp_directory_path() / ("cgal_policies_bench_limit_" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  const std::string bench = std::string(CGAL_POLICIES_BIN_DIR) + "/simplify_bench --mesh '" +
+                            CGAL_POLICIES_SOURCE_DIR + "/data/cow.obj' --ratios 0.5 ";
+  ASSERT_EQ(
+      run_command(bench + "--policies gh,classic --repetitions 3 --samples 1000 --time-limit " +
+                  "1e-9 --out '" + out.string() + "' > /dev/null 2>&1"),
+      0);
+  const std::vector<Row> rows = read_csv(out / "runs.csv");
+  ASSERT_EQ(rows.size(), 2u);
+  for (const Row& row : rows) {
+    EXPECT_EQ(row.at("stop_reason"), "time_limit") << row.at("policy");
+    EXPECT_EQ(row.at("repetitions"), "1") << row.at("policy");
+    EXPECT_EQ(row.at("output_faces"), row.at("input_faces")) << row.at("policy");
+  }
+  EXPECT_EQ(count_occurrences(read_text(out / "report.md"), "†"), 3u);  // two rows, one note
+  fs::remove_all(out);
+  const int status = run_command(bench + "--time-limit -1 > /dev/null 2>&1");
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 2) << status;
+}
+
+// --fit adds a P+fit row beside each policy, with the pass's time and a "Fitting pass" table that
+// compares it with P and with lt.
+TEST(BenchFit, AddsAFittedRowBesideEachPolicy) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const fs::path out =
+      fs::temp_directory_path() / ("cgal_policies_bench_fit_" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  ASSERT_EQ(run_command(std::string(CGAL_POLICIES_BIN_DIR) + "/simplify_bench --mesh '" +
+                        CGAL_POLICIES_SOURCE_DIR + "/data/cow.obj' --ratios 0.1 --policies lt " +
+                        "--fit --repetitions 1 --samples 20000 --out '" + out.string() +
+                        "' > /dev/null 2>&1"),
+            0);
+  const std::vector<Row> rows = read_csv(out / "runs.csv");
+  std::vector<std::string> policies;
+  for (const Row& row : rows) {
+    policies.push_back(row.at("policy"));
+    const bool fitted = row.at("policy").find("+fit") != std::string::npos;
+    EXPECT_EQ(std::stod(row.at("fit_seconds")) > 0, fitted) << row.at("policy");
+    EXPECT_EQ(row.at("output_faces"), rows.front().at("output_faces")) << row.at("policy");
+    EXPECT_EQ(row.at("valid"), "true") << row.at("policy");
+  }
+  EXPECT_EQ(policies, (std::vector<std::string>{"gh", "gh+fit", "lt", "lt+fit"}));
+  const std::string report = read_text(out / "report.md");
+  EXPECT_NE(report.find("## Fitting pass"), std::string::npos);
+  EXPECT_EQ(count_occurrences(report, "| cow.obj | 10% → 580 | "), 2u) << report;
+  fs::remove_all(out);
+}
+
+// --attributes reads, carries and measures the corner attributes: on a flat grid with a linear
+// texture field every run (fast too) reproduces the field exactly and keeps its one seam (the
+// border).
+TEST(BenchAttributes, CarriesAndMeasuresTheCornerAttributes) {
+  const fs::path out =
+      fs::temp_directory_path() / ("cgal_policies_bench_attributes_" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  fs::create_directories(out);
+  test_meshes::Mesh grid = test_meshes::flat_grid(6);
+  test_meshes::paint_corners(
+      grid,
+      [](test_meshes::Mesh::Face_index, const test_meshes::Point& p) {
+        return std::array<double, 2>{p.x() / 6, p.y() / 6};
+      },
+      false);
+  const fs::path input = out / "grid.obj";
+  apps::write_mesh_atomically(grid, input.string());
+  const std::string bench = std::string(CGAL_POLICIES_BIN_DIR) + "/simplify_bench --mesh '" +
+                            input.string() + "' --faces 8 --policies attributes,fast " +
+                            "--repetitions 1 --samples 2000 --out '" + out.string() + "'";
+  ASSERT_EQ(run_command(bench + " --attributes > /dev/null 2>&1"), 0);
+  const std::vector<Row> rows = read_csv(out / "runs.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  for (const Row& row : rows) {
+    const std::string& policy = row.at("policy");
+    EXPECT_EQ(row.at("attributes"), "carried") << policy;
+    EXPECT_LE(std::stod(row.at("uv_max_rel")), 1e-12) << policy;
+    EXPECT_EQ(row.at("flipped_uv_faces"), "0") << policy;
+    EXPECT_EQ(row.at("seam_loops_a"), "1") << policy;
+    EXPECT_EQ(row.at("seam_loops_b"), "1") << policy;
+    EXPECT_EQ(row.at("seam_edges_a"), "24") << policy;
+  }
+  const std::string json = read_text(out / "runs.json");
+  EXPECT_EQ(count_occurrences(json, "\"uv_mean_rel\": "), 3u) << json;
+  EXPECT_NE(read_text(out / "report.md").find("## Corner attributes"), std::string::npos);
+
+  ASSERT_EQ(run_command(bench + " > /dev/null 2>&1"), 0);
+  for (const Row& row : read_csv(out / "runs.csv")) {
+    EXPECT_EQ(row.at("attributes"), "") << row.at("policy");
+    EXPECT_EQ(row.at("uv_mean_rel"), "") << row.at("policy");
+  }
+  EXPECT_EQ(read_text(out / "report.md").find("## Corner attributes"), std::string::npos);
+  fs::remove_all(out);
+}
+
+}  // namespace

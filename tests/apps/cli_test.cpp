@@ -1,0 +1,901 @@
+// The apps from the outside (apps/cli/ and the tools): exit codes, one error line naming the file,
+// no partial output even when interrupted, the input never overwritten (docs/cli.md), the passes
+// simplify runs on dirty scans, and corner attributes, materials and images carried through
+// simplify into OBJ and glTF.
+#include "gltf_builder.h"
+#include "test_meshes.h"
+
+#include <cgal_policies/small_components.h>
+#include "cli/App_error.h"
+#include "evaluation/attribute_error.h"
+#include "evaluation/mesh_validity.h"
+#include "evaluation/surface_error.h"
+#include "io/clean_triangle_soup.h"
+#include "io/gltf_io.h"
+#include "io/mesh_io.h"
+#include "io/obj_writer.h"
+#include "io/polygon_crossing.h"
+#include "io/soup_readers.h"
+
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair.h>
+
+#include <cgal_policies/Corner_attributes.h>
+
+#include <gtest/gtest.h>
+#include <tiny_gltf.h>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <random>
+#include <regex>
+#include <sstream>
+#include <thread>
+#include <tuple>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using Attributes = cgal_policies::Corner_attributes<apps::Point>;
+using apps::Mesh;
+using gltf_fixtures::Gltf_builder;
+using gltf_fixtures::kFloat;
+using gltf_fixtures::kImageBytes;
+using gltf_fixtures::triangles;
+using gltf_fixtures::two_primitive_square;
+
+struct Command_result {
+  int exit_code;
+  std::string out, err;
+};
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+class Cli : public testing::Test {
+ protected:
+  void SetUp() override {
+    // The process id too, as viewer_test and bench_test do: two builds' suites may run at once.
+    m_dir = fs::path(testing::TempDir()) /
+            ("cli_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()) +
+             "_" + std::to_string(::getpid()));
+    fs::remove_all(m_dir);
+    fs::create_directories(m_dir);
+  }
+  void TearDown() override { fs::remove_all(m_dir); }
+
+  fs::path file(const std::string& name) const { return m_dir / name; }
+
+  fs::path write(const std::string& name, const std::string& contents) const {
+    std::ofstream(file(name), std::ios::binary) << contents;
+    return file(name);
+  }
+
+  Command_result run(const std::string& app, const std::string& args) const {
+    const std::string command = std::string(CGAL_POLICIES_BIN_DIR) + "/" + app + " " + args + " >" +
+                                file("stdout").string() + " 2>" + file("stderr").string();
+    const int status = std::system(command.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(file("stdout")),
+            read_text(file("stderr"))};
+  }
+
+  // A failure: the expected code, exactly one line on stderr naming `path`, and no output file.
+  void expect_failure(const std::string& args, int code, const fs::path& named,
+                      const fs::path& output) const {
+    const Command_result r = run("simplify", args);
+    EXPECT_EQ(r.exit_code, code) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(named.string()), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(output));
+    for (const auto& entry : fs::directory_iterator(m_dir))
+      EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos)
+          << "temporary file left behind: " << entry.path();
+  }
+
+  fs::path m_dir;
+};
+
+const char* const kTetrahedronOff =
+    "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+    "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+
+TEST_F(Cli, SimplifiesATinyMeshAndReportsJson) {
+  const fs::path in = write("tet.off", kTetrahedronOff), out = file("out.obj");
+  const Command_result r = run("simplify", in.string() + " " + out.string() + " 1 --json --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(out));
+  // No --policy: the library's default pipeline, lt and then the fitting pass.
+  for (const char* field :
+       {"\"policy\": \"lt\"", "\"fit\": true", "\"input_faces\": 4", "\"output_faces\": 4",
+        "\"output_vertices\": 4", "\"seconds\": ", "\"stop_reason\": "})
+    EXPECT_NE(r.out.find(field), std::string::npos) << field << " missing in " << r.out;
+}
+
+TEST_F(Cli, AnEmptyFileIsBadInput) {
+  const fs::path in = write("empty.off", ""), out = file("out.off");
+  expect_failure(in.string() + " " + out.string() + " 0.5", 3, in, out);
+}
+
+TEST_F(Cli, RandomBytesAreBadInput) {
+  std::string noise;
+  unsigned state = 12345;
+  for (int i = 0; i < 4096; ++i) noise += char((state = state * 1103515245u + 12345u) >> 16);
+  for (const char* name : {"noise.ply", "noise.off", "noise.obj", "noise.stl"}) {
+    const fs::path in = write(name, noise), out = file("out.off");
+    expect_failure(in.string() + " " + out.string() + " 0.5", 3, in, out);
+  }
+}
+
+TEST_F(Cli, ATruncatedBinaryPlyIsBadInput) {
+  std::string ply =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float "
+      "y\nproperty float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n";
+  const float points[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+  ply.append(reinterpret_cast<const char*>(points), sizeof points);
+  const int faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  for (const auto& f : faces) {
+    ply += char(3);
+    ply.append(reinterpret_cast<const char*>(f), sizeof f);
+  }
+  const fs::path whole = write("whole.ply", ply), out = file("out.off");
+  ASSERT_EQ(run("simplify", whole.string() + " " + out.string() + " 1 --quiet").exit_code, 0);
+  fs::remove(out);
+  const fs::path in = write("truncated.ply", ply.substr(0, ply.size() - 20));
+  expect_failure(in.string() + " " + out.string() + " 0.5", 3, in, out);
+}
+
+TEST_F(Cli, NonFiniteCoordinatesAreBadInput) {
+  const fs::path in = write("nan.off", "OFF\n3 1 0\n0 0 0\n1 0 0\nnan 1 0\n3 0 1 2\n");
+  const fs::path out = file("out.off");
+  expect_failure(in.string() + " " + out.string() + " 0.5", 3, in, out);
+  const fs::path inf = write("inf.obj", "v 0 0 0\nv 1 0 0\nv inf 1 0\nf 1 2 3\n");
+  expect_failure(inf.string() + " " + out.string() + " 0.5", 3, inf, out);
+}
+
+TEST_F(Cli, AnOutOfRangeFaceIndexIsBadInput) {
+  const fs::path in = write("range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+  const fs::path out = file("out.off");
+  expect_failure(in.string() + " " + out.string() + " 0.5", 3, in, out);
+}
+
+TEST_F(Cli, AMissingFileIsBadInput) {
+  const fs::path in = file("missing.obj"), out = file("out.off");
+  expect_failure(in.string() + " " + out.string() + " 0.5", 3, in, out);
+}
+
+TEST_F(Cli, AnUnwritableOutputFolderFailsWithCodeFourAndNoFile) {
+  const fs::path in = write("tet.off", kTetrahedronOff);
+  const fs::path out = file("no_such_folder") / "out.off";
+  expect_failure(in.string() + " " + out.string() + " 1", 4, out, out);
+}
+
+TEST_F(Cli, TheInputIsNeverOverwrittenWithoutForce) {
+  const fs::path in = write("tet.off", kTetrahedronOff);
+  const Command_result r = run("simplify", in.string() + " " + in.string() + " 1");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(read_text(in), kTetrahedronOff);
+  EXPECT_EQ(run("simplify", in.string() + " " + in.string() + " 1 --force --quiet").exit_code, 0);
+}
+
+TEST_F(Cli, BadUsageGivesCodeTwo) {
+  const fs::path in = write("tet.off", kTetrahedronOff), out = file("out.off");
+  for (const std::string& args :
+       {in.string() + " " + out.string() + " 1.5", in.string() + " " + out.string(),
+        in.string() + " " + out.string() + " 0.5 --policy nonsense",
+        in.string() + " " + out.string() + " 0.5 --no-such-option",
+        in.string() + " " + file("out.xyz").string() + " 0.5"}) {
+    const Command_result r = run("simplify", args);
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+}
+
+TEST_F(Cli, OptionsOutOfRangeAreRefusedBeforeTheInputIsRead) {
+  // The input does not exist: a check made after reading would give code 3, not 2.
+  const fs::path in = file("missing.off"), out = file("out.off");
+  const std::string io = in.string() + " " + out.string() + " 0.5 ";
+  // The policy, the option the error line must name, its value.
+  const std::vector<std::array<std::string, 3>> cases = {{"hausdorff", "--tolerance", "-1"},
+                                                         {"hausdorff", "--tolerance", "0"},
+                                                         {"hausdorff", "--steps", "0"},
+                                                         {"hausdorff", "--steps", "2.5"},
+                                                         {"fast", "--aggressiveness", "0"},
+                                                         {"classic", "--border-weight", "-1"},
+                                                         {"curvature", "--eps", "-0.1"},
+                                                         {"fusion", "--mu", "-2"},
+                                                         {"classic", "--max-normal-angle", "200"},
+                                                         {"fast", "--max-error", "0.01"}};
+  for (const auto& [policy, option, value] : cases) {
+    const Command_result r =
+        run("simplify", io + "--policy " + policy + " " + option + " " + value);
+    EXPECT_EQ(r.exit_code, 2) << policy << " " << option << " " << value << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(option), std::string::npos)
+        << "the line names " << option << ": " << r.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+}
+
+// Counts beyond what a size_t or an int holds, and time limits beyond what the clock holds, are
+// refused, not converted (that conversion is undefined behaviour, which UBSan reports in the
+// sanitized build).
+TEST_F(Cli, CountsTooLargeForTheirTypeAreRefused) {
+  const fs::path in = file("missing.off"), out = file("out.off");
+  const std::string io = in.string() + " " + out.string() + " ";
+  for (const auto& [option, arguments] : std::vector<std::pair<std::string, std::string>>{
+           {"--faces", "--faces 1e30"},
+           {"--samples", "0.5 --samples 1e30"},
+           {"--min-component", "0.5 --min-component 1e30"},
+           {"--smooth", "0.5 --smooth 1e30"},
+           {"--time-limit", "0.5 --time-limit 1e300"},
+           {"--fit-rounds", "0.5 --fit --fit-rounds 1e30"}}) {
+    const Command_result r = run("simplify", io + arguments);
+    EXPECT_EQ(r.exit_code, 2) << arguments << ": " << r.err;
+    EXPECT_NE(r.err.find(option), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+}
+
+TEST_F(Cli, MeshErrorBetweenAFileAndItselfIsZero) {
+  const fs::path in = write("tet.off", kTetrahedronOff);
+  const Command_result r =
+      run("mesh_error", in.string() + " " + in.string() + " --json --samples 1000");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::smatch hausdorff;  // zero up to the round-off of points built on the faces
+  ASSERT_TRUE(std::regex_search(r.out, hausdorff, std::regex("\"hausdorff\": ([-+.e0-9]+),")));
+  EXPECT_LE(std::stod(hausdorff[1]), 1e-12);
+  EXPECT_NE(r.out.find("\"valid\": true"), std::string::npos) << r.out;
+  EXPECT_EQ(run("mesh_error", in.string() + " " + file("missing.off").string()).exit_code, 3);
+}
+
+// A number field of an app's JSON object; NaN when missing.
+double json_number(const std::string& json, const std::string& field) {
+  std::smatch match;
+  if (!std::regex_search(json, match, std::regex("\"" + field + "\": ([-+.e0-9]+)")))
+    return std::nan("");
+  return std::stod(match[1]);
+}
+
+TEST_F(Cli, MeshErrorComparesCornerAttributesWhenAsked) {
+  const std::string spot = test_meshes::data_file("spot.obj");
+  const Command_result same =
+      run("mesh_error", spot + " " + spot + " --attributes --json --samples 20000");
+  ASSERT_EQ(same.exit_code, 0) << same.err;
+  EXPECT_LE(json_number(same.out, "uv_mean_rel"), 1e-12) << same.out;
+  EXPECT_LE(json_number(same.out, "uv_max_rel"), 1e-12) << same.out;
+  EXPECT_EQ(json_number(same.out, "flipped_uv_faces"), 0) << same.out;
+  EXPECT_EQ(json_number(same.out, "seam_edges_a"), 288) << same.out;
+  EXPECT_EQ(json_number(same.out, "seam_edges_b"), 288) << same.out;
+  EXPECT_EQ(json_number(same.out, "seam_loops_a"), 1) << same.out;
+  EXPECT_EQ(json_number(same.out, "seam_loops_b"), 1) << same.out;
+  EXPECT_EQ(same.out.find("normal_angle"), std::string::npos) << same.out;  // spot has no normals
+  // Not asked, or nothing to compare: no attribute field.
+  const Command_result plain = run("mesh_error", spot + " " + spot + " --json --samples 1000");
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  const fs::path tet = write("tet.off", kTetrahedronOff);
+  const Command_result bare =
+      run("mesh_error", tet.string() + " " + tet.string() + " --attributes --json --samples 1000");
+  ASSERT_EQ(bare.exit_code, 0) << bare.err;
+  for (const Command_result* r : {&plain, &bare})
+    for (const char* field : {"\"uv_", "\"normal_angle", "\"seam_", "\"flipped_uv_faces\""})
+      EXPECT_EQ(r->out.find(field), std::string::npos) << field << " in " << r->out;
+  EXPECT_NE(bare.out.find("\"valid\": true"), std::string::npos) << bare.out;
+}
+
+TEST_F(Cli, ASnapshotThatCannotBeWrittenLeavesNoMeshEither) {
+  // Builds without the viewer refuse --snapshot as bad usage, before reading anything.
+  const bool with_viewer =
+      run("simplify", "--help").out.find("not in this build") == std::string::npos;
+  const fs::path in = write("tet.off", kTetrahedronOff), out = file("out.off");
+  const fs::path png = file("no_such_folder") / "picture.png";
+  expect_failure(in.string() + " " + out.string() + " 1 --snapshot " + png.string(),
+                 with_viewer ? 4 : 2, png, out);
+  EXPECT_FALSE(fs::exists(file("no_such_folder")));
+  if (!with_viewer) return;
+  // The picture comes first: an OUT that existed is not replaced when it fails.
+  const fs::path kept = write("kept.off", "an older output");
+  EXPECT_EQ(run("simplify", in.string() + " " + kept.string() + " 1 --snapshot " + png.string())
+                .exit_code,
+            4);
+  std::ifstream older(kept);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(older), {}), "an older output");
+}
+
+TEST_F(Cli, MaxErrorBoundsEveryEdgeCollapsePolicy) {
+  // A sphere of 1,280 faces: curved everywhere, so the bound must stop every policy early, and
+  // small enough for the sanitized build.
+  const fs::path sphere = file("sphere.off");
+  test_meshes::Mesh input = test_meshes::loop_sphere(3);
+  ASSERT_TRUE(
+      CGAL::IO::write_polygon_mesh(sphere.string(), input, CGAL::parameters::stream_precision(17)));
+  const fs::path out = file("sphere_out.off");
+  for (const char* policy : {"gh", "classic", "curvature"}) {
+    const std::string args = sphere.string() + " " + out.string() + " --ratio 0.01 --policy " +
+                             policy + " --json --quiet --measure --samples 20000";
+    const Command_result bounded = run("simplify", args + " --max-error 0.002");
+    ASSERT_EQ(bounded.exit_code, 0) << policy << ": " << bounded.err;
+    EXPECT_NE(bounded.out.find("\"stop_reason\": \"error_bound_reached\""), std::string::npos)
+        << policy << ": " << bounded.out;
+    EXPECT_NE(bounded.out.find("\"valid\": true"), std::string::npos) << policy;
+    EXPECT_LE(json_number(bounded.out, "hausdorff"),
+              0.002 * json_number(bounded.out, "bbox_diagonal"))
+        << policy;
+    const Command_result free = run("simplify", args);
+    ASSERT_EQ(free.exit_code, 0) << policy << ": " << free.err;
+    EXPECT_LT(json_number(free.out, "output_faces"), json_number(bounded.out, "output_faces"))
+        << policy;
+    EXPECT_GT(json_number(free.out, "hausdorff"), 0.002 * json_number(free.out, "bbox_diagonal"))
+        << policy << ": the bound must have been needed";
+  }
+}
+
+TEST_F(Cli, FitIsReportedAndTwoRunsWriteTheSameBytes) {
+  // A small sphere, so that the sanitized build runs it in seconds.
+  const fs::path sphere = file("sphere.off");
+  const test_meshes::Mesh small = test_meshes::loop_sphere(2);
+  ASSERT_TRUE(
+      CGAL::IO::write_polygon_mesh(sphere.string(), small, CGAL::parameters::stream_precision(17)));
+  std::string written[2];
+  for (int run_index = 0; run_index < 2; ++run_index) {
+    const fs::path out = file("sphere_" + std::to_string(run_index) + ".ply");
+    const Command_result r =
+        run("simplify", sphere.string() + " " + out.string() +
+                            " 0.25 --policy lt --fit --fit-rounds 2 --json --quiet");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    for (const char* field : {"\"fit_seconds\": ", "\"fit_rounds\": 2,",
+                              "\"fit_flips\": ", "\"fit_moves\": ", "\"output_faces\": 80,"})
+      EXPECT_NE(r.out.find(field), std::string::npos) << field << " missing in " << r.out;
+    written[run_index] = read_text(out);
+  }
+  EXPECT_FALSE(written[0].empty());
+  EXPECT_TRUE(written[0] == written[1]) << "two fitted runs wrote different files";
+  const fs::path in = write("tet.off", kTetrahedronOff), out = file("out.off");
+  // A policy named runs alone, and its fit options need --fit.
+  expect_failure(in.string() + " " + out.string() + " 1 --policy lt --fit-rounds 2", 2,
+                 "--fit-rounds", out);
+  expect_failure(in.string() + " " + out.string() + " 1 --fit --fit-rounds 0", 2, "--fit-rounds",
+                 out);
+}
+
+TEST_F(Cli, TheFastPolicyRefusesMaxError) {
+  const fs::path in = write("tet.off", kTetrahedronOff), out = file("out.off");
+  const Command_result r =
+      run("simplify", in.string() + " " + out.string() + " 0.5 --policy fast --max-error 0.01");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("--max-error"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(Cli, TheBunnyAtTenPercentWithGhReachesItsTarget) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const fs::path out = file("bunny.ply");
+  const Command_result r =
+      run("simplify", test_meshes::data_file("bunny.obj") + " " + out.string() +
+                          " 0.1 --policy gh --json --measure --samples 20000");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::smatch faces;
+  ASSERT_TRUE(std::regex_search(r.out, faces, std::regex("\"output_faces\": ([0-9]+)")));
+  EXPECT_NEAR(std::stod(faces[1]), 6945, 69.45);
+  EXPECT_NE(r.out.find("\"valid\": true"), std::string::npos);
+  EXPECT_NE(r.out.find("\"stop_reason\": \"target_reached\""), std::string::npos);
+}
+
+TEST_F(Cli, TheTargetIsCheckedBeforeTheInputIsRead) {
+  const fs::path in = file("missing.off"), out = file("out.off");
+  const std::vector<std::array<std::string, 2>> cases = {
+      {"--faces", "0"},          {"--faces", "2.5"},        {"--ratio", "0"},
+      {"--ratio", "1.5"},        {"--samples", "2.5"},      {"--time-limit", "-1"},
+      {"--min-component", "-3"}, {"--min-component", "2.5"}};
+  for (const auto& [option, value] : cases) {
+    const std::string target = option == "--faces" || option == "--ratio" ? "" : " --faces 10";
+    const Command_result r =
+        run("simplify", in.string() + " " + out.string() + " " + option + " " + value + target);
+    EXPECT_EQ(r.exit_code, 2) << option << " " << value << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(option), std::string::npos) << r.err;
+  }
+  const Command_result fast =
+      run("simplify", in.string() + " " + out.string() + " 0.5 --policy fast --time-limit 1");
+  EXPECT_EQ(fast.exit_code, 2) << fast.err;
+  EXPECT_NE(fast.err.find("--time-limit"), std::string::npos) << fast.err;
+}
+
+TEST_F(Cli, AMissingOutputFolderIsRefusedBeforeTheInputIsRead) {
+  // The input does not exist: a check made after reading would give code 3, not 4.
+  const fs::path in = file("missing.off"), folder = file("no_such_folder");
+  const fs::path out = folder / "out.off";
+  expect_failure(in.string() + " " + out.string() + " 0.5", 4, out, out);
+  const bool with_viewer =
+      run("simplify", "--help").out.find("not in this build") == std::string::npos;
+  if (!with_viewer) return;  // --snapshot is then bad usage, before reading too
+  const fs::path png = folder / "picture.png";
+  expect_failure(in.string() + " " + file("out.off").string() + " 0.5 --snapshot " + png.string(),
+                 4, png, file("out.off"));
+}
+
+TEST_F(Cli, ATimeLimitStopsTheRunWhereItIs) {
+  const fs::path out = file("cow.off");
+  // Long past at the first collapse: the queue alone takes longer to build.
+  const Command_result r = run("simplify", test_meshes::data_file("cow.obj") + " " + out.string() +
+                                               " 0.1 --time-limit 1e-9 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"stop_reason\": \"time_limit\""), std::string::npos) << r.out;
+  EXPECT_EQ(json_number(r.out, "output_faces"), json_number(r.out, "input_faces")) << r.out;
+  EXPECT_EQ(json_number(r.out, "time_limit_seconds"), 1e-9) << r.out;
+  EXPECT_EQ(apps::read_triangle_mesh(out.string()).number_of_faces(),
+            json_number(r.out, "input_faces"));
+  const Command_result unlimited = run("simplify", test_meshes::data_file("cow.obj") + " " +
+                                                       out.string() + " 0.1 --time-limit 0 --json");
+  ASSERT_EQ(unlimited.exit_code, 0) << unlimited.err;
+  EXPECT_NE(unlimited.out.find("\"stop_reason\": \"target_reached\""), std::string::npos);
+}
+
+TEST_F(Cli, HeaderCountsBeyondTheFileAreBadInputBeforeAnyAllocation) {
+  const fs::path out = file("out.off");
+  const fs::path off = write("huge.off", "OFF\n2000000000 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  std::string ply =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float "
+      "y\nproperty float z\nelement face 1000000000\nproperty list uchar int "
+      "vertex_indices\nend_header\n";
+  const float points[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  ply.append(reinterpret_cast<const char*>(points), sizeof points);
+  const int triangle[3] = {0, 1, 2};
+  ply += char(3);
+  ply.append(reinterpret_cast<const char*>(triangle), sizeof triangle);
+  const fs::path binary_ply = write("huge.ply", ply);
+  std::string stl(80, ' ');
+  const std::uint32_t triangles = 100000000;  // little-endian, as the format wants
+  for (int byte = 0; byte < 4; ++byte) stl += char((triangles >> (8 * byte)) & 0xff);
+  const fs::path binary_stl = write("huge.stl", stl);
+  for (const fs::path& in : {off, binary_ply, binary_stl}) {
+    expect_failure(in.string() + " " + out.string() + " 0.5", 3, in, out);
+    EXPECT_NE(run("simplify", in.string() + " " + out.string() + " 0.5").err.find("declares"),
+              std::string::npos)
+        << in;
+  }
+}
+
+TEST_F(Cli, HeaderCountsThatFitTheFileAreRead) {
+  const fs::path out = file("out.off");
+  const fs::path ascii_ply = write("tet.ply",
+                                   "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n"
+                                   "property float y\nproperty float z\nelement face 4\nproperty "
+                                   "list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 "
+                                   "0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3");
+  std::string stl(80, ' ');
+  stl += std::string("\x04\x00\x00\x00", 4);
+  const float corners[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const int faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  for (const auto& f : faces) {
+    const float normal[3] = {0, 0, 0};
+    stl.append(reinterpret_cast<const char*>(normal), sizeof normal);
+    for (int corner : f) stl.append(reinterpret_cast<const char*>(corners[corner]), 12);
+    stl += std::string(2, '\0');  // the attribute byte count
+  }
+  const fs::path binary_stl = write("tet.stl", stl);
+  for (const fs::path& in : {write("tet.off", kTetrahedronOff), ascii_ply, binary_stl}) {
+    const Command_result r = run("simplify", in.string() + " " + out.string() + " 1 --json");
+    ASSERT_EQ(r.exit_code, 0) << in << ": " << r.err;
+    EXPECT_EQ(json_number(r.out, "output_faces"), 4) << in;
+  }
+}
+
+// The argv execv wants, pointing into `args`.
+std::vector<char*> argv_of(std::vector<std::string>& args) {
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  return argv;
+}
+
+// simplify ARGS in a child process, its output thrown away, killed by `signal` after `delay`
+// (or not at all with a zero signal); its exit status.
+int run_and_kill(std::vector<std::string> args, int signal, std::chrono::microseconds delay) {
+  const std::string app = std::string(CGAL_POLICIES_BIN_DIR) + "/simplify";
+  args.insert(args.begin(), app);
+  const std::vector<char*> argv = argv_of(args);
+  const pid_t child = ::fork();
+  if (child == 0) {
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(null, STDOUT_FILENO);
+    ::dup2(null, STDERR_FILENO);
+    ::execv(app.c_str(), argv.data());
+    ::_exit(127);
+  }
+  if (signal != 0) {
+    std::this_thread::sleep_for(delay);
+    ::kill(child, signal);
+  }
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return status;
+}
+
+// How many times InterruptedRunsLeaveTheOldOutputOrTheCompleteNewOne kills simplify:
+// scripts/kill_test.sh N runs it N times.
+int kill_count() {
+  const char* count = std::getenv("CGAL_POLICIES_KILLS");
+  return count ? std::atoi(count) : 40;
+}
+
+TEST_F(Cli, InterruptedRunsLeaveTheOldOutputOrTheCompleteNewOne) {
+  // The cow: short enough for tens of runs; OFF, the slowest format to write.
+  const std::string cow = test_meshes::data_file("cow.obj");
+  const fs::path out = file("cow.off"), reference = file("reference.off");
+  const std::vector<std::string> options = {"0.5", "--quiet"};
+  std::vector<std::string> args = {cow, reference.string()};
+  args.insert(args.end(), options.begin(), options.end());
+  const auto start = std::chrono::steady_clock::now();
+  const int reference_status = run_and_kill(args, 0, {});
+  const auto whole_run = std::chrono::duration_cast<std::chrono::microseconds>(
+      std::chrono::steady_clock::now() - start);
+  ASSERT_TRUE(WIFEXITED(reference_status) && WEXITSTATUS(reference_status) == 0);
+  const std::string complete = read_text(reference);
+  // The mesh the run writes is whole: every face of the target is there.
+  EXPECT_EQ(apps::read_triangle_mesh(reference.string()).number_of_faces(),
+            std::llround(0.5 * double(apps::read_triangle_mesh(cow).number_of_faces())));
+
+  const std::string old_output = "an older output";
+  args[1] = out.string();
+  std::mt19937 random(15);
+  // Over the whole run and a little after, so that every stage is hit: reading, simplifying,
+  // writing the temporary, renaming it, exiting.
+  std::uniform_int_distribution<long> delay_us(0, whole_run.count() * 11 / 10);
+  int unguarded = 0, interrupted = 0, finished = 0, replaced = 0;
+  for (int kill = 0; kill < kill_count(); ++kill) {
+    std::ofstream(out, std::ios::binary) << old_output;
+    const int signal = kill % 2 ? SIGTERM : SIGINT;
+    const int status = run_and_kill(args, signal, std::chrono::microseconds(delay_us(random)));
+    const std::string left = read_text(out);
+    if (WIFSIGNALED(status)) {
+      // Before main() installed the handlers: nothing was written yet.
+      ++unguarded;
+      EXPECT_EQ(WTERMSIG(status), signal) << "kill " << kill;
+      EXPECT_EQ(left, old_output) << "kill " << kill;
+      continue;
+    }
+    const int code = WEXITSTATUS(status);
+    if (code == 0) {
+      ++finished;
+      EXPECT_EQ(left, complete) << "kill " << kill;
+    } else {
+      ++interrupted;
+      EXPECT_EQ(code, 128 + signal) << "kill " << kill;
+      EXPECT_TRUE(left == old_output || left == complete)
+          << "kill " << kill << ": " << left.size() << " bytes";
+    }
+    replaced += left == complete;
+    for (const auto& entry : fs::directory_iterator(m_dir))
+      ASSERT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos)
+          << "kill " << kill << " left " << entry.path();
+  }
+  std::printf(
+      "%d kills: %d before main(), %d interrupted (%d after the new output was in place), %d "
+      "finished\n",
+      kill_count(), unguarded, interrupted, replaced - finished, finished);
+  EXPECT_GT(interrupted, 0);
+}
+
+// simplify `args` in a child process that stops half-way through writing OUT's temporary file,
+// which is a FIFO made beforehand under the name the child will give it (a FIFO holds 64 KiB
+// unread), then `signal`; its exit status once it has ended.
+int interrupt_while_writing(std::vector<std::string> args, const fs::path& out, int signal) {
+  const std::string app = std::string(CGAL_POLICIES_BIN_DIR) + "/simplify";
+  args.insert(args.begin(), app);
+  const std::vector<char*> argv = argv_of(args);
+  int go[2];
+  if (::pipe(go) != 0) return -1;
+  const pid_t child = ::fork();
+  if (child == 0) {
+    char byte;
+    ::close(go[1]);
+    if (::read(go[0], &byte, 1) != 1) ::_exit(126);  // not before the FIFO exists
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(null, STDOUT_FILENO);
+    ::dup2(null, STDERR_FILENO);
+    ::execv(app.c_str(), argv.data());
+    ::_exit(127);
+  }
+  ::close(go[0]);
+  const fs::path fifo = out.parent_path() / ("." + out.stem().string() + ".tmp-" +
+                                             std::to_string(child) + out.extension().string());
+  const bool made = ::mkfifo(fifo.c_str(), 0600) == 0;
+  const int reader = made ? ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK) : -1;
+  [[maybe_unused]] const ssize_t sent = ::write(go[1], "g", 1);
+  ::close(go[1]);
+  // The first bytes of the mesh: the writer is at work, and blocks once the FIFO is full.
+  bool writing = false;
+  // Generous: the sanitized Debug build reads, simplifies and draws the cow for about a minute.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(20);
+  char bytes[16];
+  while (reader >= 0 && !writing && std::chrono::steady_clock::now() < deadline) {
+    writing = ::read(reader, bytes, sizeof bytes) > 0;
+    if (!writing) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  ::kill(child, writing ? signal : SIGKILL);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  if (reader >= 0) ::close(reader);  // only now: a writer alone would get SIGPIPE
+  return writing ? status : -1;
+}
+
+TEST_F(Cli, AnInterruptWhileWritingLeavesTheOldOutputAndNoTemporary) {
+  const bool with_viewer =
+      run("simplify", "--help").out.find("not in this build") == std::string::npos;
+  const fs::path out = file("cow.off"), png = file("cow.png");
+  const std::string old_output = "an older output";
+  for (const int signal : {SIGINT, SIGTERM}) {
+    std::ofstream(out, std::ios::binary) << old_output;
+    std::vector<std::string> args = {test_meshes::data_file("cow.obj"), out.string(), "0.5"};
+    // With the viewer, the picture is in place when the mesh is written: it must go too.
+    const bool picture = with_viewer && signal == SIGTERM;
+    if (picture) args.insert(args.end(), {"--snapshot", png.string(), "--size", "64x32"});
+    const int status = interrupt_while_writing(args, out, signal);
+    ASSERT_TRUE(WIFEXITED(status)) << signal << ": status " << status;
+    EXPECT_EQ(WEXITSTATUS(status), 128 + signal);
+    EXPECT_EQ(read_text(out), old_output);
+    EXPECT_FALSE(fs::exists(png));
+    for (const auto& entry : fs::directory_iterator(m_dir))
+      EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos)
+          << "temporary file left behind: " << entry.path();
+  }
+}
+
+// Two tetrahedra, which no collapse can simplify, and nothing else.
+const char* const kTwoTetrahedraOff =
+    "OFF\n8 8 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n5 0 0\n6 0 0\n5 1 0\n5 0 1\n"
+    "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n3 4 6 5\n3 4 5 7\n3 4 7 6\n3 5 6 7\n";
+
+TEST_F(Cli, SmallPiecesAreDroppedOnlyWhenAsked) {
+  const fs::path in = write("two.off", kTwoTetrahedraOff), out = file("out.off");
+  const std::string io = in.string() + " " + out.string() + " --json --quiet --faces ";
+  // A run the policy ended with no collapse left: its faces, distance to the target, pieces gone.
+  const auto expect_stopped = [&](const Command_result& r, double faces, double gap,
+                                  double vanished) {
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("\"stop_reason\": \"no_collapse_left\""), std::string::npos);
+    EXPECT_EQ(json_number(r.out, "output_faces"), faces);
+    EXPECT_EQ(json_number(r.out, "target_gap_faces"), gap);
+    EXPECT_EQ(json_number(r.out, "vanished_components"), vanished);
+  };
+  expect_stopped(run("simplify", io + "4"), 8, 4, 0);
+
+  const Command_result dropped = run("simplify", io + "4 --drop-small-pieces");
+  expect_stopped(dropped, 4, 0, 1);
+  EXPECT_EQ(json_number(dropped.out, "vanished_faces"), 4);
+  EXPECT_EQ(apps::read_triangle_mesh(out.string()).number_of_faces(), 4u);
+
+  const Command_result last = run("simplify", io + "1 --drop-small-pieces");
+  ASSERT_EQ(last.exit_code, 0) << last.err;
+  EXPECT_EQ(json_number(last.out, "output_faces"), 4);  // the last piece stays
+  EXPECT_EQ(json_number(last.out, "target_gap_faces"), 3);
+
+  const Command_result before = run("simplify", io + "8 --min-component 5");
+  ASSERT_EQ(before.exit_code, 0) << before.err;
+  EXPECT_EQ(json_number(before.out, "min_component"), 5);
+  EXPECT_EQ(json_number(before.out, "dropped_components"), 1);
+  EXPECT_EQ(json_number(before.out, "dropped_component_faces"), 4);
+  EXPECT_EQ(json_number(before.out, "output_faces"), 4);
+}
+
+TEST_F(Cli, SimplifyCarriesTextureCoordinatesIntoAnObjWithEveryKindOfPolicy) {
+  // A flat 6 x 6 grid whose texture coordinates are its x and y over 6: a linear field, which
+  // every carried collapse reproduces.
+  Mesh grid = test_meshes::flat_grid(6);
+  const Attributes painted = Attributes::add(grid, {true, false, false, false});
+  for (const auto h : grid.halfedges())
+    if (!grid.is_border(h))
+      (*painted.uvs)[h] = {grid.point(grid.target(h)).x() / 6, grid.point(grid.target(h)).y() / 6};
+  const fs::path input = file("grid.obj");
+  apps::write_mesh_atomically(grid, input.string());
+  const fs::path out = file("out.obj");
+
+  // gh through CGAL's edge_collapse and the carrier, fast through its own engine.
+  for (const std::string policy : {"gh", "fast"}) {
+    const Command_result carried =
+        run("simplify", input.string() + " " + out.string() + " --faces 8 --policy " + policy +
+                            " --json --force --measure --samples 2000");
+    ASSERT_EQ(carried.exit_code, 0) << policy << ": " << carried.err;
+    EXPECT_NE(carried.out.find("\"attributes\": \"carried\""), std::string::npos) << carried.out;
+    // The field is linear and the grid flat: the carried coordinates are right everywhere, and the
+    // only seam is the border, in and out.
+    EXPECT_LE(json_number(carried.out, "uv_max_rel"), 1e-12) << carried.out;
+    EXPECT_EQ(json_number(carried.out, "flipped_uv_faces"), 0) << carried.out;
+    EXPECT_EQ(json_number(carried.out, "seam_edges_a"), 24) << carried.out;
+    EXPECT_EQ(json_number(carried.out, "seam_loops_a"), 1) << carried.out;
+    EXPECT_EQ(json_number(carried.out, "seam_loops_b"), 1) << carried.out;
+    const Mesh simplified =
+        apps::read_triangle_mesh(out.string(), nullptr, apps::Corner_attribute_reading::keep);
+    EXPECT_LE(simplified.number_of_faces(), 8u) << policy;
+    const Attributes kept(simplified);
+    ASSERT_TRUE(kept.uvs.has_value()) << policy;
+    for (const auto h : simplified.halfedges()) {
+      if (simplified.is_border(h)) continue;
+      const apps::Point& p = simplified.point(simplified.target(h));
+      EXPECT_NEAR((*kept.uvs)[h][0], p.x() / 6, 1e-12) << policy;
+      EXPECT_NEAR((*kept.uvs)[h][1], p.y() / 6, 1e-12) << policy;
+    }
+  }
+}
+
+TEST_F(Cli, SimplifyPassesAGlbsMaterialsAndImagesThrough) {
+  // A textured 6 x 6 grid written by the apps, then given an embedded and an external image.
+  Mesh grid = test_meshes::flat_grid(6);
+  test_meshes::paint_corners(
+      grid,
+      [](Mesh::Face_index, const apps::Point& p) {
+        return std::array<double, 2>{p.x() / 6, p.y() / 6};
+      },
+      false);
+  const Attributes painted = Attributes::add(grid, {false, false, false, true});
+  for (const auto f : grid.faces()) (*painted.materials)[f] = 0;
+  const fs::path plain = file("plain.glb");
+  apps::write_mesh_atomically(grid, plain.string(), {{}, {"skin"}, nullptr});
+  tinygltf::Model model;
+  std::string error, warning;
+  ASSERT_TRUE(tinygltf::TinyGLTF().LoadBinaryFromFile(&model, &error, &warning, plain.string()))
+      << error;
+  std::vector<unsigned char>& data = model.buffers[0].data;
+  tinygltf::BufferView view;
+  view.buffer = 0;
+  view.byteOffset = data.size();
+  view.byteLength = kImageBytes.size();
+  data.insert(data.end(), kImageBytes.begin(), kImageBytes.end());
+  model.bufferViews.push_back(view);
+  model.images.resize(2);
+  model.images[0].bufferView = int(model.bufferViews.size() - 1);
+  model.images[0].mimeType = "image/png";
+  model.images[1].uri = "tex/skin.png";
+  model.textures.resize(2);
+  model.textures[0].source = 0;
+  model.textures[1].source = 1;
+  model.materials[0].pbrMetallicRoughness.baseColorTexture.index = 0;
+  model.materials[0].emissiveTexture.index = 1;
+  const fs::path in = file("in.glb");
+  {
+    std::ofstream out(in, std::ios::binary);
+    tinygltf::TinyGLTF().WriteGltfSceneToStream(&model, out, false, true);
+  }
+
+  fs::create_directories(file("out"));
+  const fs::path out = file("out") / "out.glb";
+  const Command_result r =
+      run("simplify", in.string() + " " + out.string() + " 0.5 --policy gh --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"attributes\": \"carried\""), std::string::npos) << r.out;
+  const apps::Gltf_soup read = apps::read_gltf(out.string(), true);
+  EXPECT_LE(read.soup.polygons.size(), 36u);
+  ASSERT_EQ(read.looks->images.size(), 2u);
+  EXPECT_EQ(std::string(read.looks->images[0].image.begin(), read.looks->images[0].image.end()),
+            kImageBytes);
+  EXPECT_EQ(read.looks->images[0].mimeType, "image/png");
+  EXPECT_TRUE(read.looks->images[0].uri.empty());  // still in the file
+  EXPECT_EQ(read.looks->images[1].uri, file("tex/skin.png").string());
+  ASSERT_EQ(read.looks->materials.size(), 1u);
+  EXPECT_EQ(read.looks->materials[0].name, "skin");
+  EXPECT_EQ(read.looks->materials[0].pbrMetallicRoughness.baseColorTexture.index, 0);
+  EXPECT_EQ(read.looks->materials[0].emissiveTexture.index, 1);
+  EXPECT_EQ(read.looks->textures.size(), 2u);
+  EXPECT_EQ(read.soup.corners.polygon_materials,
+            std::vector<std::uint32_t>(read.soup.polygons.size(), 0));
+  // The file names the image by its path from its own folder.
+  EXPECT_NE(read_text(out).find("\"uri\":\"../tex/skin.png\""), std::string::npos);
+}
+
+TEST_F(Cli, SimplifyWritesATexturedObjAsGlb) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const std::string spot = test_meshes::data_file("spot.obj");
+  const fs::path out = file("spot.glb");
+  const Command_result r = run("simplify", spot + " " + out.string() + " 0.1 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"attributes\": \"carried\""), std::string::npos) << r.out;
+  apps::Read_report spot_report, report;
+  const Mesh original =
+      apps::read_triangle_mesh(spot, &spot_report, apps::Corner_attribute_reading::keep);
+  const Mesh simplified =
+      apps::read_triangle_mesh(out.string(), &report, apps::Corner_attribute_reading::keep);
+  EXPECT_EQ(double(simplified.number_of_faces()), json_number(r.out, "output_faces")) << r.out;
+  EXPECT_LE(json_number(r.out, "target_gap_faces"), 0) << r.out;
+  EXPECT_LT(simplified.number_of_faces(), original.number_of_faces() / 9);
+  EXPECT_EQ(report.materials.names, spot_report.materials.names);
+  const Attributes a(simplified);
+  ASSERT_TRUE(a.uvs.has_value());
+  for (const auto h : simplified.halfedges())
+    if (!simplified.is_border(h)) {
+      EXPECT_TRUE(std::isfinite((*a.uvs)[h][0]));
+    }
+  // The seams are where they were: one loop, as in spot.
+  const Command_result compared =
+      run("mesh_error", spot + " " + out.string() + " --attributes --json --samples 2000");
+  ASSERT_EQ(compared.exit_code, 0) << compared.err;
+  EXPECT_EQ(json_number(compared.out, "seam_loops_b"), 1) << compared.out;
+}
+
+TEST_F(Cli, SimplifyCarriesPlyColoursIntoAGltf) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const fs::path out = file("spot.gltf");
+  const Command_result r = run(
+      "simplify", test_meshes::data_file("spot_colors.ply") + " " + out.string() + " 0.1 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"attributes\": \"carried\""), std::string::npos) << r.out;
+  EXPECT_NE(read_text(out).find("\"COLOR_0\""), std::string::npos);
+  const Mesh simplified =
+      apps::read_triangle_mesh(out.string(), nullptr, apps::Corner_attribute_reading::keep);
+  const Attributes a(simplified);
+  ASSERT_TRUE(a.colors.has_value());
+  for (const auto h : simplified.halfedges()) {
+    if (simplified.is_border(h)) continue;
+    for (double c : (*a.colors)[h]) {
+      EXPECT_GE(c, 0);
+      EXPECT_LE(c, 1);
+    }
+  }
+}
+
+TEST_F(Cli, BadGltfIsOneBadInputLineAndNoOutput) {
+  const fs::path out = file("out.glb");
+  const auto one_triangle = [](std::vector<float> positions, std::vector<std::uint32_t> indices) {
+    Gltf_builder b;
+    const int p = b.accessor(positions, kFloat, TINYGLTF_TYPE_VEC3);
+    const int i = b.accessor(indices, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR);
+    b.place({triangles(p, i, -1, -1)}, {});
+    return b;
+  };
+  const float nan = std::nanf("");
+  one_triangle({0, 0, 0, 1, 0, 0, 0, nan, 0}, {0, 1, 2}).write(file("nan.glb"));
+  one_triangle({0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 1, 3}).write(file("index.glb"));
+  Gltf_builder raw_uvs = two_primitive_square();
+  raw_uvs.model.accessors[4].normalized = false;  // the second primitive's u16 coordinates
+  raw_uvs.write(file("raw_uvs.glb"));
+  Gltf_builder cycle = two_primitive_square();
+  cycle.model.nodes[0].children = {0};  // its own child
+  cycle.write(file("cycle.glb"));
+  two_primitive_square().write(file("whole.glb"));
+  const std::string whole = read_text(file("whole.glb"));
+  write("truncated.glb", whole.substr(0, whole.size() / 2));
+  write("malformed.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [");
+  write("missing_buffer.gltf",
+        "{\"asset\": {\"version\": \"2.0\"}, \"buffers\": [{\"uri\": \"gone.bin\", "
+        "\"byteLength\": 36}]}");
+  const std::map<std::string, std::string> causes = {
+      {"nan.glb", "mesh 0 primitive 0: the position of vertex 2 is not finite"},
+      {"index.glb", "mesh 0 primitive 0: index 3 is out of range (3 vertices)"},
+      {"raw_uvs.glb",
+       "mesh 0 primitive 1 TEXCOORD_0 (accessor 4): integer values must be normalized"},
+      {"cycle.glb", "the node hierarchy has a cycle"},
+      {"truncated.glb", "cannot parse: "},
+      {"malformed.gltf", "cannot parse: "},
+      {"missing_buffer.gltf", "cannot parse: "}};
+  for (const auto& [name, cause] : causes) {
+    SCOPED_TRACE(name);
+    expect_failure(file(name).string() + " " + out.string() + " 0.5", apps::exit_bad_input,
+                   file(name), out);
+    EXPECT_EQ(read_text(file("stderr")).find("simplify: " + file(name).string() + ": " + cause), 0u)
+        << read_text(file("stderr"));
+  }
+}
+
+}  // namespace

@@ -1,0 +1,859 @@
+// The io layer (apps/io/, the package's cgal_policies::io): the readers of OBJ, OFF, PLY, STL and
+// glTF on hand-written files, the soup repairs, polygons and their crossings, corner attributes
+// read and written back exactly, and the glTF reader and writer.
+#include "gltf_builder.h"
+#include "test_meshes.h"
+
+#include <cgal_policies/small_components.h>
+#include "app_types.h"
+#include "evaluation/attribute_error.h"
+#include "evaluation/mesh_validity.h"
+#include "evaluation/surface_error.h"
+#include "io/clean_triangle_soup.h"
+#include "io/gltf_io.h"
+#include "io/mesh_io.h"
+#include "io/obj_writer.h"
+#include "io/polygon_crossing.h"
+#include "io/soup_readers.h"
+
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair.h>
+
+#include <cgal_policies/Corner_attributes.h>
+
+#include <gtest/gtest.h>
+#include <tiny_gltf.h>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <random>
+#include <regex>
+#include <sstream>
+#include <thread>
+#include <tuple>
+#include <vector>
+
+// The OFF and PLY readers (apps/io/soup_readers.h), on hand-written files.
+namespace fs = std::filesystem;
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+namespace readers {
+
+using apps::Polygon_soup;
+using Polygons = std::vector<std::vector<std::size_t>>;
+
+std::vector<std::array<double, 3>> coordinates(const Polygon_soup& soup) {
+  std::vector<std::array<double, 3>> result;
+  for (const apps::Point& p : soup.points) result.push_back({p.x(), p.y(), p.z()});
+  return result;
+}
+
+const std::vector<std::array<double, 3>> kSquare = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+
+void expect_square(const Polygon_soup& soup, const Polygons& polygons) {
+  EXPECT_EQ(coordinates(soup), kSquare);
+  EXPECT_EQ(soup.polygons, polygons);
+}
+
+// The cause of the bad-input error that parsing `bytes` gives; "" when it parses.
+template <typename Parse>
+std::string refusal(Parse parse, const std::string& bytes) {
+  try {
+    parse("f", bytes);
+  } catch (const apps::Io_error& e) {
+    EXPECT_EQ(e.kind(), apps::Io_error::Kind::unreadable_input);
+    const std::string message = e.what();
+    EXPECT_EQ(message.rfind("f: ", 0), 0u) << message;
+    return message;
+  }
+  return "";
+}
+
+TEST(Readers, ObjCornersWithTexturesNormalsAndNegativeIndices) {
+  const Polygon_soup soup =
+      apps::parse_obj("f",
+                      "# a square\nmtllib a.mtl\nv 0 0 0\nv 1 0 0 1.0\nv +1 1 0e0 0.5 0.5 0.5\r\n"
+                      "vt 0 0\nvn 0 0 1\ng square\nusemtl red\nf 1/1/1 2/1/1 3//1\n"
+                      "v 0 1 0 # last\nl 1 2\nf -4 -2 -1\n");
+  expect_square(soup, {{0, 1, 2}, {0, 2, 3}});
+}
+
+TEST(Readers, OffSkipsCommentsColoursAndNormals) {
+  const Polygon_soup soup =
+      apps::parse_off("f",
+                      "# a square\nCOFF 4 2 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255 # red\n\n"
+                      "+1 1 0e0 0 0 255 255\n0 1 0 1 1 1 1\n3 0 1 2 0.5 0.5 0.5\n3 0 2 3\n");
+  expect_square(soup, {{0, 1, 2}, {0, 2, 3}});
+}
+
+TEST(Readers, PlyAsciiSkipsOtherPropertiesAndElements) {
+  const Polygon_soup soup = apps::parse_ply(
+      "f",
+      "ply\nformat ascii 1.0\ncomment made by hand\nelement vertex 4\nproperty double x\n"
+      "property float nx\nproperty float y\nproperty float z\nelement face 1\n"
+      "property uchar flags\nproperty list uchar int vertex_indices\nelement edge 1\n"
+      "property int vertex1\nproperty int vertex2\nend_header\n"
+      "0 9 0 0\n1 9 0 0\n1 9 1 0\n0 9 1 0\n7 4 0 1 2 3\n0 2\n");
+  expect_square(soup, {{0, 1, 2, 3}});
+}
+
+// The same square in both byte orders, with a uint16 list count and uint32 indices.
+std::string binary_square(bool big_endian) {
+  std::string bytes = std::string("ply\nformat binary_") + (big_endian ? "big" : "little") +
+                      "_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                      "property float z\nelement face 2\n"
+                      "property list ushort uint vertex_indices\nend_header\n";
+  const auto append = [&](const void* value, std::size_t size) {
+    std::string raw(static_cast<const char*>(value), size);
+    if (big_endian) std::reverse(raw.begin(), raw.end());
+    bytes += raw;
+  };
+  for (const auto& p : kSquare)
+    for (double c : p) {
+      const float f = float(c);
+      append(&f, 4);
+    }
+  for (const std::array<std::uint32_t, 3>& face :
+       {std::array<std::uint32_t, 3>{0, 1, 2}, std::array<std::uint32_t, 3>{0, 2, 3}}) {
+    const std::uint16_t count = 3;
+    append(&count, 2);
+    for (std::uint32_t index : face) append(&index, 4);
+  }
+  return bytes;
+}
+
+TEST(Readers, PlyBinaryInBothByteOrders) {
+  for (bool big_endian : {false, true}) {
+    expect_square(apps::parse_ply("f", binary_square(big_endian)), {{0, 1, 2}, {0, 2, 3}});
+  }
+}
+
+// Stanford's scans store faces as strips: every other triangle is turned back, -1 restarts, and
+// the degenerate triangles that turn a strip are left out.
+TEST(Readers, PlyTristripsBecomeTrianglesFacingOneWay) {
+  const Polygon_soup soup = apps::parse_ply(
+      "f",
+      "ply\nformat ascii 1.0\nelement vertex 7\nproperty float x\nproperty float y\n"
+      "property float z\nelement tristrips 1\nproperty list int int vertex_indices\n"
+      "end_header\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n5 5 0\n6 5 0\n5 6 0\n"
+      "10 0 1 2 3 3 -1 4 5 6 6\n");
+  EXPECT_EQ(soup.polygons, (Polygons{{0, 1, 2}, {2, 1, 3}, {4, 5, 6}}));
+}
+
+TEST(Readers, MalformedFilesAreOneBadInputLine) {
+  const auto off = [](const std::string& source, const std::string& bytes) {
+    return apps::parse_off(source, bytes);
+  };
+  const auto ply = [](const std::string& source, const std::string& bytes) {
+    return apps::parse_ply(source, bytes);
+  };
+  const auto obj = [](const std::string& source, const std::string& bytes) {
+    return apps::parse_obj(source, bytes);
+  };
+  EXPECT_NE(refusal(obj, "v 0 0 0\nv 1 0 0\nv inf 1\nf 1 2 3\n"), "");  // two coordinates
+  EXPECT_NE(refusal(obj, "v 0 0 0\nv 1 0 0\nv 1,5 1 0\nf 1 2 3\n"), "");
+  EXPECT_NE(refusal(obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"), "");   // indices start at 1
+  EXPECT_NE(refusal(obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -4\n"), "");  // back too far
+  EXPECT_NE(refusal(obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x/1\n"), "");
+  EXPECT_NE(refusal(obj, "v 0 0 0\nv 1 0 0\nf 1 2\n"), "");  // two corners
+  EXPECT_EQ(refusal(obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), "");
+  EXPECT_NE(refusal(off, "OFF\n4 1 0\n0 0 0\n"), "");                          // truncated
+  EXPECT_NE(refusal(off, "OFF\n900000 1 0\n0 0 0\n"), "");                     // forged count
+  EXPECT_NE(refusal(off, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 -2\n"), "");  // negative index
+  EXPECT_NE(refusal(off, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n-1.2 0 1\n"), "");  // bad corner count
+  EXPECT_NE(refusal(off, "4OFF\n"), "");
+  std::string cut = binary_square(false);
+  cut.resize(cut.size() - 3);
+  EXPECT_NE(refusal(ply, cut), "");
+  EXPECT_NE(refusal(ply, "ply\nformat ascii 1.0\nelement vertex 1\n"), "");  // no end_header
+  EXPECT_NE(refusal(ply, "ply\nformat ascii 1.0\nelemply\nend_header\n"), "");
+  EXPECT_NE(refusal(ply, "ply\nformat ascii 1.0\nproperty float x\nend_header\n"), "");
+  EXPECT_NE(refusal(ply,
+                    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                    "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                    "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 -1\n"),
+            "");  // a negative index outside a strip
+  EXPECT_NE(refusal(ply,
+                    "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+                    "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                    "end_header\n0 0 0\n200 0 0 0\n"),
+            "");  // a list longer than the file
+}
+
+}  // namespace readers
+
+// The reader's fast path (apps/io/clean_triangle_soup.h): it takes exactly the soups CGAL's
+// check calls polygon meshes (when all are triangles), and builds the mesh CGAL's path builds.
+namespace clean_soups {
+
+using Polygons = std::vector<std::vector<std::size_t>>;
+using apps::Mesh;
+using apps::Point;
+
+const std::vector<Point> kPoints = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1},
+                                    {1, 1, 1}, {2, 0, 0}, {0, 2, 0}, {5, 5, 5}};
+
+bool builds(const Polygons& polygons, Mesh& mesh, std::size_t& unused) {
+  const bool built = apps::build_mesh_from_clean_triangles(kPoints, polygons, mesh, unused);
+  if (!built) {
+    EXPECT_TRUE(mesh.is_empty());
+  }
+  return built;
+}
+
+bool builds(const Polygons& polygons) {
+  Mesh mesh;
+  std::size_t unused = 0;
+  return builds(polygons, mesh, unused);
+}
+
+// halfedge by halfedge: the same target point, face and next (a Surface_mesh's opposite is fixed).
+void expect_same_connectivity(const Mesh& a, const Mesh& b) {
+  ASSERT_EQ(a.number_of_vertices(), b.number_of_vertices());
+  ASSERT_EQ(a.number_of_halfedges(), b.number_of_halfedges());
+  ASSERT_EQ(a.number_of_faces(), b.number_of_faces());
+  std::size_t differences = 0;
+  for (auto h : a.halfedges())
+    differences += a.point(a.target(h)) != b.point(b.target(h)) || a.face(h) != b.face(h) ||
+                   a.next(h) != b.next(h);
+  EXPECT_EQ(differences, 0u);
+}
+
+Mesh built_by_cgal(const std::vector<Point>& points, const Polygons& polygons) {
+  Mesh mesh;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  CGAL::Polygon_mesh_processing::remove_isolated_vertices(mesh);
+  mesh.collect_garbage();
+  return mesh;
+}
+
+TEST(CleanSoups, AClosedAndAnOpenMeshAreBuiltAsCgalBuildsThem) {
+  const Polygons tetrahedron = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+  const Polygons fan_with_unused_points = {{0, 1, 2}, {0, 2, 6}, {5, 1, 0}};  // 3, 4, 7 unused
+  for (const Polygons& polygons : {tetrahedron, fan_with_unused_points}) {
+    Mesh mesh;
+    std::size_t unused = 0;
+    ASSERT_TRUE(builds(polygons, mesh, unused));
+    EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+    EXPECT_TRUE(mesh.is_valid(false));
+    expect_same_connectivity(mesh, built_by_cgal(kPoints, polygons));
+    for (auto v : mesh.vertices())
+      EXPECT_EQ(CGAL::is_border(v, mesh).has_value(), mesh.is_border(mesh.halfedge(v)));
+  }
+  Mesh fan;
+  std::size_t unused = 0;
+  ASSERT_TRUE(builds(fan_with_unused_points, fan, unused));
+  EXPECT_EQ(unused, 3u);
+  EXPECT_EQ(fan.number_of_vertices(), 5u);
+  EXPECT_EQ(test_meshes::border_edge_count(fan), 5u);
+}
+
+TEST(CleanSoups, SoupsThatNeedRepairAreLeftToCgal) {
+  EXPECT_FALSE(builds({{0, 1, 2, 3}}));                     // not a triangle
+  EXPECT_FALSE(builds({{0, 1, 1}}));                        // a corner twice
+  EXPECT_FALSE(builds({{0, 1, 2}, {0, 1, 2}}));             // a face twice
+  EXPECT_FALSE(builds({{0, 1, 2}, {1, 0, 3}, {0, 1, 4}}));  // an edge of three faces
+  EXPECT_FALSE(builds({{0, 1, 2}, {0, 1, 3}}));             // faces facing apart
+  EXPECT_FALSE(builds({{0, 1, 2}, {0, 5, 6}}));             // a bowtie
+  EXPECT_FALSE(builds({{0, 2, 1},
+                       {0, 1, 3},
+                       {1, 2, 3},
+                       {0, 3, 2},  // two tetrahedra that
+                       {0, 5, 6},
+                       {0, 7, 5},
+                       {5, 7, 6},
+                       {0, 6, 7}}));  // share a point
+}
+
+// Every shipped mesh the fast path takes is built as CGAL builds it; the others are left whole.
+TEST(CleanSoups, ShippedMeshesAreBuiltAsCgalBuildsThem) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  std::size_t taken = 0;
+  for (const std::string name :
+       {"alligator.obj", "bob_tri.obj", "bunny.obj", "cow.obj", "dragon.ply", "dragon_res2.ply",
+        "fandisk.obj", "nefertiti.obj", "rocker-arm.obj", "spot.obj", "teapot.obj", "woody.obj"}) {
+    SCOPED_TRACE(name);
+    std::vector<Point> points;
+    Polygons polygons;
+    ASSERT_TRUE(CGAL::IO::read_polygon_soup(test_meshes::data_file(name), points, polygons));
+    const bool all_triangles =
+        std::all_of(polygons.begin(), polygons.end(), [](const auto& p) { return p.size() == 3; });
+    const bool cgal_takes =
+        all_triangles && CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons);
+    Mesh mesh;
+    std::size_t unused = 0;
+    ASSERT_EQ(apps::build_mesh_from_clean_triangles(points, polygons, mesh, unused), cgal_takes);
+    if (!cgal_takes) continue;
+    ++taken;
+    EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+    expect_same_connectivity(mesh, built_by_cgal(points, polygons));
+  }
+  EXPECT_GE(taken, 6u);
+}
+
+}  // namespace clean_soups
+
+// ---------------------------------------------------------------------------------------------
+// Polygons that cross themselves are refused before CGAL's triangulation sees them.
+namespace polygon_crossing {
+
+using apps::Point;
+
+std::vector<Point> in_plane(const std::vector<std::array<double, 2>>& xy) {
+  std::vector<Point> corners;
+  for (const auto& p : xy) corners.emplace_back(p[0], p[1], 0.0);
+  return corners;
+}
+
+bool crosses(const std::vector<std::array<double, 2>>& xy) {
+  return apps::polygon_crosses_itself(in_plane(xy), apps::Kernel::Vector_3(0, 0, 1));
+}
+
+TEST(PolygonCrossing, SimplePolygonsPass) {
+  EXPECT_FALSE(crosses({{0, 0}, {2, 0}, {3, 1}, {1, 2}, {-1, 1}}));         // convex pentagon
+  EXPECT_FALSE(crosses({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}));  // an L
+  EXPECT_FALSE(crosses({{0, 0}, {1, 0}, {2, 0}, {2, 2}, {0, 2}}));          // a corner mid-edge
+  EXPECT_FALSE(crosses({{0, 0}, {2, 0}, {2, 2}, {0, 2}, {1, 1}}));          // a notch to the centre
+}
+
+TEST(PolygonCrossing, CrossingsTouchesAndFoldsAreFound) {
+  EXPECT_TRUE(crosses({{0, 0}, {2, 0}, {0, 2}, {2, 2}}));                    // a bowtie
+  EXPECT_TRUE(crosses({{0, 2}, {2, -1}, {-1, 1}, {1, 1}, {-2, -1}}));        // a pentagram
+  EXPECT_TRUE(crosses({{0, 0}, {4, 0}, {4, 2}, {2, 0}, {0, 2}}));            // a corner on an edge
+  EXPECT_TRUE(crosses({{0, 0}, {2, 0}, {1, 0}, {1, 1}}));                    // folds back
+  EXPECT_TRUE(crosses({{0, 0}, {2, 0}, {2, 2}, {0, 0}, {-2, 2}, {-2, 0}}));  // a corner twice
+}
+
+TEST(PolygonCrossing, IsJudgedAlongTheNormal) {
+  // A pentagon whose corners alternate between two heights: simple seen from above, its edges
+  // cross seen from the side.
+  std::vector<Point> corners = in_plane({{0, 0}, {2, 0}, {3, 1}, {1, 2}, {-1, 1}});
+  for (std::size_t i = 0; i < corners.size(); ++i)
+    corners[i] = Point(corners[i].x(), corners[i].y(), 0.1 * double(i % 2));
+  EXPECT_FALSE(apps::polygon_crosses_itself(corners, apps::Kernel::Vector_3(0, 0, 1)));
+  EXPECT_TRUE(apps::polygon_crosses_itself(corners, apps::Kernel::Vector_3(0, 1, 0)));
+}
+
+// The cause the reader gives for the soup, "" when it reads it.
+std::string refusal(const std::vector<std::array<double, 2>>& xy) {
+  std::vector<Point> points = in_plane(xy);
+  std::vector<std::vector<std::size_t>> polygons(1);
+  for (std::size_t i = 0; i < points.size(); ++i) polygons[0].push_back(i);
+  try {
+    const apps::Mesh mesh = apps::triangle_mesh_from_soup("soup", points, polygons);
+    EXPECT_EQ(mesh.number_of_faces(), points.size() - 2);
+  } catch (const apps::Io_error& e) {
+    EXPECT_EQ(e.kind(), apps::Io_error::Kind::unreadable_input);
+    return e.what();
+  }
+  return "";
+}
+
+TEST(PolygonCrossing, TheReaderRefusesACrossingPolygonAndTriangulatesASimpleOne) {
+  EXPECT_EQ(refusal({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}), "");
+  EXPECT_EQ(refusal({{0, 2}, {2, -1}, {-1, 1}, {1, 1}, {-2, -1}}),
+            "soup: polygon 0 crosses itself");
+  EXPECT_EQ(refusal({{0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}}), "soup: polygon 0 has no area");
+}
+
+}  // namespace polygon_crossing
+
+// ---------------------------------------------------------------------------------------------
+// Texture coordinates, normals and materials of OBJ corners: read onto the mesh, written back.
+namespace corner_attributes {
+
+using gltf_fixtures::Gltf_builder;
+using gltf_fixtures::kFloat;
+using gltf_fixtures::triangles;
+using gltf_fixtures::two_primitive_square;
+
+using apps::Corner_tables;
+using apps::Mesh;
+using Attributes = cgal_policies::Corner_attributes<apps::Point>;
+constexpr std::size_t kNone = Corner_tables::kNoEntry;
+
+TEST(CornerAttributes, ObjTablesAndTheEntriesOfEachCorner) {
+  const apps::Polygon_soup soup = apps::parse_obj(
+      "f",
+      "mtllib a.mtl b.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nvt 0 0\nvt 1 0\n"
+      "vt 1 1 0\nvn 0 0 1\nusemtl red\nf 1/1 3/-1/1 4//-1\nusemtl blue\nf 1/1/1 2/2 3\n"
+      "usemtl red\nf 4 1 3\n");
+  const Corner_tables& t = soup.corners;
+  EXPECT_EQ(t.uvs, (std::vector<std::array<double, 2>>{{0, 0}, {1, 0}, {1, 1}}));
+  ASSERT_EQ(t.normals.size(), 1u);
+  EXPECT_EQ(t.normals[0], apps::Kernel::Vector_3(0, 0, 1));
+  EXPECT_EQ(t.polygon_uvs,
+            (std::vector<std::vector<std::size_t>>{
+                {kNone, kNone, kNone}, {0, 2, kNone}, {0, 1, kNone}, {kNone, kNone, kNone}}));
+  EXPECT_EQ(t.polygon_normals,
+            (std::vector<std::vector<std::size_t>>{
+                {kNone, kNone, kNone}, {kNone, 0, 0}, {0, kNone, kNone}, {kNone, kNone, kNone}}));
+  EXPECT_EQ(t.material_libraries, (std::vector<std::string>{"a.mtl", "b.mtl"}));
+  EXPECT_EQ(t.material_names, (std::vector<std::string>{"red", "blue"}));
+  EXPECT_EQ(t.polygon_materials, (std::vector<std::uint32_t>{Corner_tables::kNoMaterial, 0, 1, 0}));
+}
+
+TEST(CornerAttributes, AFileWithoutThemHasEmptyLists) {
+  const apps::Polygon_soup soup =
+      apps::parse_obj("f", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1 2 3\n");
+  EXPECT_TRUE(soup.corners.polygon_uvs.empty());
+  EXPECT_TRUE(soup.corners.polygon_normals.empty());
+  EXPECT_TRUE(soup.corners.polygon_materials.empty());
+}
+
+// A PLY file's per-vertex normals and texture coordinates become the values of every corner of
+// their vertex, on the mesh and in an OBJ file written from it; one that is not finite is bad
+// input.
+TEST(CornerAttributes, PlyVertexNormalsAndTextureCoordinatesGoToEveryCorner) {
+  const auto square = [](const std::string& third_u) {
+    return "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+           "property float z\nproperty float nx\nproperty float ny\nproperty float nz\n"
+           "property float texture_u\nproperty float texture_v\nelement face 2\n"
+           "property list uchar int vertex_indices\nend_header\n"
+           "0 0 0 0 0 1 0 0\n1 0 0 0 0 1 0.5 0\n1 1 0 0 0 1 " +
+           third_u + " 0.5\n0 1 0 0 0 1 0 0.5\n3 0 1 2\n3 0 2 3\n";
+  };
+  const apps::Polygon_soup soup = apps::parse_ply("f", square("0.5"));
+  EXPECT_EQ(soup.corners.uvs,
+            (std::vector<std::array<double, 2>>{{0, 0}, {0.5, 0}, {0.5, 0.5}, {0, 0.5}}));
+  EXPECT_EQ(soup.corners.normals, std::vector<apps::Kernel::Vector_3>(4, {0, 0, 1}));
+  EXPECT_EQ(soup.corners.polygon_uvs, soup.polygons);
+  EXPECT_EQ(soup.corners.polygon_normals, soup.polygons);
+
+  const fs::path folder = fs::temp_directory_path() / ("ply_corners_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  std::ofstream(folder / "square.ply") << square("0.5");
+  const Mesh mesh = apps::read_triangle_mesh((folder / "square.ply").string(), nullptr,
+                                             apps::Corner_attribute_reading::keep);
+  apps::write_mesh_atomically(mesh, (folder / "square.obj").string());
+  const Mesh reread = apps::read_triangle_mesh((folder / "square.obj").string(), nullptr,
+                                               apps::Corner_attribute_reading::keep);
+  for (const Mesh* m : {&mesh, &reread}) {
+    const Attributes attributes(*m);
+    ASSERT_TRUE(attributes.uvs && attributes.normals);
+    for (const auto h : m->halfedges()) {
+      if (m->is_border(h)) continue;
+      const apps::Point& p = m->point(m->target(h));
+      EXPECT_EQ((*attributes.uvs)[h], (std::array<double, 2>{p.x() / 2, p.y() / 2}));
+      EXPECT_EQ((*attributes.normals)[h], apps::Kernel::Vector_3(0, 0, 1));
+    }
+  }
+  fs::remove_all(folder);
+
+  try {
+    apps::parse_ply("f", square("nan"));
+    ADD_FAILURE() << "a texture coordinate of nan was read";
+  } catch (const apps::Io_error& e) {
+    EXPECT_EQ(e.kind(), apps::Io_error::Kind::unreadable_input);
+    EXPECT_EQ(std::string(e.what()), "f: vertex 2: its texture coordinate is not finite");
+  }
+}
+
+// Colours of PLY vertices (integer channels scaled by their type's largest value, float ones kept,
+// alpha 1 when absent) and of OBJ points (r g b [a]) become the values of every corner of their
+// vertex; one that is not finite is bad input.
+TEST(CornerAttributes, PlyAndObjVertexColoursGoToEveryCorner) {
+  const std::string triangle_faces = "element face 1\nproperty list uchar int vertex_indices\n";
+  const apps::Polygon_soup bytes = apps::parse_ply(
+      "f",
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n" +
+          triangle_faces + "end_header\n0 0 0 255 0 51\n1 0 0 0 255 0\n0 1 0 0 0 255\n3 0 1 2\n");
+  EXPECT_EQ(bytes.corners.colors,
+            (std::vector<std::array<double, 4>>{{1, 0, 0.2, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}}));
+  EXPECT_EQ(bytes.corners.polygon_colors, bytes.polygons);
+  const auto float_ply = [&](const std::string& first_red) {
+    return "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+           "property float z\nproperty float diffuse_red\nproperty float diffuse_green\n"
+           "property float diffuse_blue\nproperty float diffuse_alpha\n" +
+           triangle_faces + "end_header\n0 0 0 " + first_red +
+           " 0 0 0.5\n1 0 0 0 0.25 0 1\n0 1 0 0 0 1 1\n3 0 1 2\n";
+  };
+  EXPECT_EQ(apps::parse_ply("f", float_ply("0.75")).corners.colors,
+            (std::vector<std::array<double, 4>>{{0.75, 0, 0, 0.5}, {0, 0.25, 0, 1}, {0, 0, 1, 1}}));
+  const apps::Polygon_soup obj = apps::parse_obj(
+      "f", "v 0 0 0 1 0 0\nv 1 0 0 0 1 0 0.5\nv 0 1 0\nv 1 1 0 1\nf 1 2 3\nf 2 4 3\n");
+  ASSERT_EQ(obj.corners.colors.size(), 4u);
+  EXPECT_EQ(obj.corners.colors[0], (std::array<double, 4>{1, 0, 0, 1}));
+  EXPECT_EQ(obj.corners.colors[1], (std::array<double, 4>{0, 1, 0, 0.5}));
+  for (const std::size_t without : {2, 3})  // no colour, and a w
+    for (const double channel : obj.corners.colors[without]) EXPECT_TRUE(std::isnan(channel));
+  EXPECT_EQ(obj.corners.polygon_colors, obj.polygons);
+
+  const auto cause = [](auto&& parse) {
+    try {
+      parse();
+    } catch (const apps::Io_error& e) {
+      EXPECT_EQ(e.kind(), apps::Io_error::Kind::unreadable_input);
+      return std::string(e.what());
+    }
+    return std::string("read");
+  };
+  EXPECT_EQ(cause([&] { apps::parse_ply("f", float_ply("nan")); }),
+            "f: vertex 0: its colour is not finite");
+  EXPECT_EQ(cause([] { apps::parse_obj("f", "v 0 0 0 1 red 0\n"); }),
+            "f: line 1: a vertex's colour needs three or four finite numbers");
+}
+
+TEST(CornerAttributes, BadEntriesAreOneBadInputLine) {
+  const auto cause = [](const std::string& bytes) {
+    try {
+      apps::parse_obj("f", bytes);
+    } catch (const apps::Io_error& e) {
+      EXPECT_EQ(e.kind(), apps::Io_error::Kind::unreadable_input);
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  EXPECT_EQ(cause(triangle + "vt 0 0\nf 1/2 2/1 3/1\n"),
+            "f: line 5: '1/2' names a texture coordinate (vt) that is not read before it");
+  EXPECT_EQ(cause(triangle + "f 1//1 2 3\nvn 0 0 1\n"),
+            "f: line 4: '1//1' names a normal (vn) that is not read before it");
+  EXPECT_EQ(cause(triangle + "vt nan 0\n"),
+            "f: line 4: a texture coordinate needs one or two finite numbers, u [v]");
+  EXPECT_EQ(cause(triangle + "vn 0 1\n"), "f: line 4: a normal needs three finite numbers, x y z");
+  EXPECT_EQ(cause(triangle + "f 1/ 2 3\n"),
+            "f: line 4: '1/' has a slash but names no texture coordinate or normal");
+  EXPECT_EQ(cause(triangle + "usemtl\n"), "f: line 4: usemtl needs a material name");
+}
+
+// Each face's corners as (point, uv, normal), starting at the lowest point, and its material.
+struct Face_corners {
+  std::vector<std::array<double, 12>> corners;
+  std::uint32_t material;
+  bool operator==(const Face_corners& o) const {
+    // NaN marks a corner without a value: compare bit patterns, not numbers.
+    return material == o.material && corners.size() == o.corners.size() &&
+           std::memcmp(corners.data(), o.corners.data(), corners.size() * sizeof corners[0]) == 0;
+  }
+};
+
+std::vector<Face_corners> face_corners(const Mesh& mesh) {
+  const Attributes a(mesh);
+  std::vector<Face_corners> faces;
+  for (const auto f : mesh.faces()) {
+    Face_corners face{{}, a.materials ? (*a.materials)[f] : Attributes::kNoMaterial};
+    for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      const apps::Point& p = mesh.point(mesh.target(h));
+      const Attributes::Uv uv = a.uvs ? (*a.uvs)[h] : Attributes::Uv{-1, -1};
+      const apps::Kernel::Vector_3 n =
+          a.normals ? (*a.normals)[h] : apps::Kernel::Vector_3(-1, -1, -1);
+      const Attributes::Color c = a.colors ? (*a.colors)[h] : Attributes::Color{-1, -1, -1, -1};
+      face.corners.push_back(
+          {p.x(), p.y(), p.z(), uv[0], uv[1], n.x(), n.y(), n.z(), c[0], c[1], c[2], c[3]});
+    }
+    std::rotate(face.corners.begin(), std::min_element(face.corners.begin(), face.corners.end()),
+                face.corners.end());
+    faces.push_back(face);
+  }
+  return faces;
+}
+
+fs::path scratch_folder(const std::string& name) {
+  const fs::path folder =
+      fs::path(testing::TempDir()) / ("corner_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(folder);
+  fs::create_directories(folder / "out");
+  return folder;
+}
+
+TEST(CornerAttributes, APolygonsTrianglesKeepItsCornersAndMaterial) {
+  const fs::path folder = scratch_folder("polygon");
+  // A pentagon with a corner of each texture coordinate, beside a triangle of no material.
+  std::ofstream(folder / "in.obj")
+      << "mtllib looks.mtl\nv 0 0 0\nv 2 0 0\nv 3 1 0\nv 1 2 0\nv -1 1 0\nv 1 -1 0\n"
+         "vt 0 0\nvt 1 0\nvt 1 1\nvt 0.5 1\nvt 0 1\nvn 0 0 1\nf 1 6 2\nusemtl wood\n"
+         "f 1/1/1 2/2/1 3/3/1 4/4/1 5/5/1\n";
+  apps::Read_report report;
+  const Mesh mesh = apps::read_triangle_mesh((folder / "in.obj").string(), &report,
+                                             apps::Corner_attribute_reading::keep);
+  ASSERT_EQ(mesh.number_of_faces(), 4u);
+  EXPECT_EQ(report.materials.names, std::vector<std::string>{"wood"});
+  EXPECT_EQ(report.materials.libraries, std::vector<std::string>{(folder / "looks.mtl").string()});
+  const Attributes a(mesh);
+  ASSERT_TRUE(a.uvs && a.normals && a.materials);
+  std::size_t wood_corners = 0;
+  for (const auto f : mesh.faces())
+    for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      const apps::Point& p = mesh.point(mesh.target(h));
+      if ((*a.materials)[f] == Attributes::kNoMaterial) {
+        EXPECT_TRUE(std::isnan((*a.uvs)[h][0]));
+        continue;
+      }
+      ++wood_corners;
+      EXPECT_EQ((*a.normals)[h], apps::Kernel::Vector_3(0, 0, 1));
+      // The pentagon's texture coordinates go with its points.
+      const std::map<std::pair<double, double>, Attributes::Uv> uv_of = {{{0, 0}, {0, 0}},
+                                                                         {{2, 0}, {1, 0}},
+                                                                         {{3, 1}, {1, 1}},
+                                                                         {{1, 2}, {0.5, 1}},
+                                                                         {{-1, 1}, {0, 1}}};
+      EXPECT_EQ((*a.uvs)[h], uv_of.at({p.x(), p.y()}));
+    }
+  EXPECT_EQ(wood_corners, 9u);  // three triangles
+
+  // Written into another folder and read back: the same corners, the material file found.
+  const fs::path out = folder / "out" / "again.obj";
+  apps::write_mesh_atomically(mesh, out.string(), report.materials);
+  const std::string text = read_text(out);
+  EXPECT_EQ(text.rfind("# written by cgal_policies\nmtllib ../looks.mtl\n", 0), 0u) << text;
+  apps::Read_report again;
+  EXPECT_EQ(face_corners(apps::read_triangle_mesh(out.string(), &again,
+                                                  apps::Corner_attribute_reading::keep)),
+            face_corners(mesh));
+  EXPECT_EQ(again.materials.libraries, report.materials.libraries);
+  fs::remove_all(folder);
+}
+
+TEST(CornerAttributes, ASoupThatNeedsRepairLosesThemAndSaysSo) {
+  const fs::path folder = scratch_folder("repair");
+  // Two triangles facing apart across their edge: the repair flips one.
+  std::ofstream(folder / "in.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\n"
+                                      "f 1/1 2/1 3/1\nf 2/1 3/1 4/1\n";
+  apps::Read_report report;
+  const Mesh mesh = apps::read_triangle_mesh((folder / "in.obj").string(), &report,
+                                             apps::Corner_attribute_reading::keep);
+  EXPECT_FALSE(Attributes(mesh).any());
+  EXPECT_NE(std::find(report.repairs.begin(), report.repairs.end(),
+                      "dropped the texture coordinates, normals and materials (the repair does "
+                      "not carry them)"),
+            report.repairs.end());
+  fs::remove_all(folder);
+}
+
+TEST(CornerAttributes, ShippedTexturedMeshesRoundTripExactly) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const fs::path folder = scratch_folder("shipped");
+  for (const std::string name : {"spot.obj", "bob_tri.obj"}) {
+    SCOPED_TRACE(name);
+    apps::Read_report report;
+    const Mesh mesh = apps::read_triangle_mesh(test_meshes::data_file(name), &report,
+                                               apps::Corner_attribute_reading::keep);
+    const Attributes a(mesh);
+    ASSERT_TRUE(a.uvs.has_value());
+    std::size_t corners_without_uv = 0;
+    for (const auto h : mesh.halfedges())
+      corners_without_uv += !mesh.is_border(h) && std::isnan((*a.uvs)[h][0]);
+    EXPECT_EQ(corners_without_uv, 0u);
+    const fs::path out = folder / "out" / name;
+    apps::write_mesh_atomically(mesh, out.string(), report.materials);
+    apps::Read_report again;
+    EXPECT_EQ(face_corners(apps::read_triangle_mesh(out.string(), &again,
+                                                    apps::Corner_attribute_reading::keep)),
+              face_corners(mesh));
+    EXPECT_EQ(again.materials.names, report.materials.names);
+    EXPECT_EQ(again.materials.libraries, report.materials.libraries);
+  }
+  fs::remove_all(folder);
+}
+
+// A mesh with texture coordinates, normals and colours, seams everywhere, written as PLY (a vertex
+// per wedge) reads back as the same mesh, every corner's values exact and each seam whole.
+TEST(CornerAttributes, PlyWrittenWithItsWedgesReadsBackExactly) {
+  Mesh cube = test_meshes::six_sided_cube();
+  test_meshes::paint_corners(
+      cube,
+      [&](Mesh::Face_index f, const apps::Point& p) {
+        return test_meshes::cube_chart(test_meshes::cube_side(cube, f), p);
+      },
+      true);
+  test_meshes::paint_colors(cube, [&](Mesh::Face_index f, const apps::Point& p) {
+    // Whole steps of 1/255, which a byte holds exactly.
+    return std::array<double, 4>{test_meshes::cube_side(cube, f) * 40 / 255.0, p.x() * 60 / 255.0,
+                                 1, 1};
+  });
+  const fs::path folder = scratch_folder("ply_wedges");
+  const std::string path = (folder / "cube.ply").string();
+  apps::write_mesh_atomically(cube, path);
+  const apps::Polygon_soup soup = apps::parse_ply(path, read_text(path));
+  // A vertex per side it lies on: 3 at each of the 8 corners, 2 along the 12 edges' 3 inner
+  // points, 1 at the 9 inner points of each side.
+  EXPECT_EQ(soup.points.size(), 8u * 3 + 12u * 3 * 2 + 6u * 9);
+  const Mesh reread = apps::read_triangle_mesh(path, nullptr, apps::Corner_attribute_reading::keep);
+  EXPECT_EQ(reread.number_of_vertices(), cube.number_of_vertices());
+  EXPECT_TRUE(CGAL::is_closed(reread));
+  EXPECT_EQ(face_corners(reread), face_corners(cube));
+  // Every edge of the cube is a seam: 12 edges of 4 segments.
+  EXPECT_EQ(apps::measure_attribute_error(cube, reread, 1000).seam_edges_b, 48u);
+  fs::remove_all(folder);
+}
+
+// ---------------------------------------------------------------------------------------------
+// glTF (.gltf, .glb): corners per glTF vertex, points welded, materials and images passed through.
+
+// Each value as glTF stores it: through float.
+std::vector<Face_corners> through_float(std::vector<Face_corners> faces) {
+  for (Face_corners& face : faces)
+    for (auto& corner : face.corners)
+      for (double& c : corner) c = double(float(c));
+  return faces;
+}
+
+std::vector<Face_corners> sorted(std::vector<Face_corners> faces) {
+  std::sort(faces.begin(), faces.end(), [](const Face_corners& a, const Face_corners& b) {
+    return std::tie(a.corners, a.material) < std::tie(b.corners, b.material);
+  });
+  return faces;
+}
+
+std::size_t seam_edge_count(const Mesh& mesh) {
+  const Attributes a(mesh);
+  std::size_t seams = 0;
+  for (const auto e : mesh.edges()) seams += a.is_seam_edge(mesh, mesh.halfedge(e));
+  return seams;
+}
+
+// six_sided_cube() moved off the float grid, each side its own texture chart, its normal, its
+// colour and one of two materials.
+Mesh painted_cube() {
+  Mesh mesh = test_meshes::six_sided_cube();
+  for (const auto v : mesh.vertices())
+    mesh.point(v) = mesh.point(v) + apps::Kernel::Vector_3(0.1, 0.2, 1.0 / 3);
+  const Attributes a = Attributes::add(mesh, {true, true, true, true});
+  for (const auto f : mesh.faces()) {
+    const int side = test_meshes::cube_side(mesh, f);
+    (*a.materials)[f] = std::uint32_t(side % 2);
+    const auto n = CGAL::Polygon_mesh_processing::compute_face_normal(f, mesh);
+    for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      const apps::Point p = mesh.point(mesh.target(h)) - apps::Kernel::Vector_3(0.1, 0.2, 1.0 / 3);
+      (*a.uvs)[h] = test_meshes::cube_chart(side, p);
+      (*a.uvs)[h][1] += 1.0 / 7;
+      (*a.normals)[h] = n;
+      (*a.colors)[h] = {side / 7.0, 0.3, 1.0 / 3, 0.9};
+    }
+  }
+  return mesh;
+}
+
+TEST(Gltf, ARoundTripKeepsEveryCornerToFloatPrecision) {
+  const fs::path folder = scratch_folder("gltf_round_trip");
+  const Mesh cube = painted_cube();
+  const apps::Material_references names{{}, {"even", "odd"}, nullptr};
+  for (const std::string name : {"cube.gltf", "cube.glb"}) {
+    SCOPED_TRACE(name);
+    const fs::path out = folder / name;
+    apps::write_mesh_atomically(cube, out.string(), names);
+    apps::Read_report report;
+    const Mesh read =
+        apps::read_triangle_mesh(out.string(), &report, apps::Corner_attribute_reading::keep);
+    EXPECT_TRUE(report.repairs.empty());
+    // One closed surface: the seams split no vertex of the mesh.
+    EXPECT_EQ(read.number_of_vertices(), cube.number_of_vertices());
+    EXPECT_EQ(read.number_of_faces(), 192u);
+    EXPECT_EQ(test_meshes::border_edge_count(read), 0u);
+    EXPECT_EQ(sorted(face_corners(read)), sorted(through_float(face_corners(cube))));
+    EXPECT_EQ(seam_edge_count(read), 48u);  // the cube's 12 edges, 4 mesh edges each
+    EXPECT_EQ(seam_edge_count(read), seam_edge_count(cube));
+    EXPECT_EQ(report.materials.names, names.names);
+    ASSERT_TRUE(report.materials.gltf);
+    EXPECT_EQ(report.materials.gltf->materials.size(), 2u);
+  }
+  fs::remove_all(folder);
+}
+
+// A glTF model whose buffer 0 gets each array as an accessor of its own.
+
+TEST(Gltf, TwoPrimitivesWithAUvSeamAreOneConnectedMesh) {
+  const fs::path folder = scratch_folder("gltf_seam");
+  const fs::path in = folder / "square.glb";
+  two_primitive_square().write(in);
+  apps::Read_report report;
+  const Mesh mesh =
+      apps::read_triangle_mesh(in.string(), &report, apps::Corner_attribute_reading::keep);
+  EXPECT_TRUE(report.repairs.empty());
+  ASSERT_EQ(mesh.number_of_faces(), 2u);
+  EXPECT_EQ(mesh.number_of_vertices(), 4u);
+  EXPECT_EQ(test_meshes::border_edge_count(mesh), 4u);  // the diagonal joins the two
+  EXPECT_EQ(report.materials.names, (std::vector<std::string>{"paint", "material_1"}));
+  const Attributes a(mesh);
+  ASSERT_TRUE(a.uvs && a.materials);
+  EXPECT_FALSE(a.normals);
+  // The node's translation moved the points; the second primitive's corners are its own.
+  const auto diagonal =
+      test_meshes::halfedge_between(mesh, apps::Point(10, 0, 0), apps::Point(11, 1, 0));
+  const auto other = mesh.opposite(diagonal);
+  EXPECT_TRUE(a.is_seam_edge(mesh, diagonal));
+  const Mesh::Halfedge_index in_first = (*a.materials)[mesh.face(diagonal)] == 0 ? diagonal : other;
+  const Mesh::Halfedge_index in_second = in_first == diagonal ? other : diagonal;
+  EXPECT_EQ((*a.materials)[mesh.face(in_second)], 1u);
+  const auto corner_at = [&](Mesh::Halfedge_index h, const apps::Point& p) {
+    return mesh.point(mesh.target(h)) == p ? h : mesh.prev(h);
+  };
+  EXPECT_EQ((*a.uvs)[corner_at(in_first, {11, 1, 0})], (Attributes::Uv{0.5, 0.5}));
+  EXPECT_EQ((*a.uvs)[corner_at(in_second, {11, 1, 0})], (Attributes::Uv{0.8, 0.8}));
+  EXPECT_EQ((*a.uvs)[corner_at(in_first, {10, 0, 0})], (Attributes::Uv{0, 0}));
+  EXPECT_EQ((*a.uvs)[corner_at(in_second, {10, 0, 0})], (Attributes::Uv{0, 0}));
+  // Colours: the first primitive's, RGB with alpha 1; none on the second's corners.
+  ASSERT_TRUE(a.colors);
+  EXPECT_EQ((*a.colors)[corner_at(in_first, {10, 0, 0})], (Attributes::Color{0, 0.2, 1, 1}));
+  EXPECT_TRUE(std::isnan((*a.colors)[corner_at(in_second, {10, 0, 0})][0]));
+  fs::remove_all(folder);
+}
+
+// A node's world transform: a child turned a quarter about z and mirrored in x, under a parent
+// moved up by 5. The mirror turns the winding, so the reader turns the triangle back to face its
+// normal, which the transform leaves at +z.
+TEST(Gltf, NodeTransformsPlaceTurnAndMirror) {
+  const fs::path folder = scratch_folder("gltf_nodes");
+  Gltf_builder b;
+  const int position =
+      b.accessor(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0}, kFloat, TINYGLTF_TYPE_VEC3);
+  tinygltf::Primitive primitive = triangles(position, -1, -1, -1);
+  primitive.attributes["NORMAL"] =
+      b.accessor(std::vector<float>{0, 0, 1, 0, 0, 1, 0, 0, 1}, kFloat, TINYGLTF_TYPE_VEC3);
+  b.place({primitive}, {0, 0, 5});
+  b.model.nodes[0].mesh = -1;
+  b.model.nodes[0].children = {1};
+  b.model.nodes.emplace_back();
+  b.model.nodes[1].mesh = 0;
+  b.model.nodes[1].rotation = {0, 0, std::sqrt(0.5), std::sqrt(0.5)};
+  b.model.nodes[1].scale = {-1, 1, 1};
+  b.write(folder / "turned.gltf");
+  const Mesh mesh = apps::read_triangle_mesh((folder / "turned.gltf").string(), nullptr,
+                                             apps::Corner_attribute_reading::keep);
+  ASSERT_EQ(mesh.number_of_faces(), 1u);
+  // The quarter turn's sines and cosines are rounded: the points snapped to a 1e-12 grid.
+  const auto snap = [](double x) { return std::round(x * 1e12) / 1e12; };
+  std::vector<std::array<double, 3>> points;
+  for (const auto v : mesh.vertices())
+    points.push_back({snap(mesh.point(v).x()), snap(mesh.point(v).y()), snap(mesh.point(v).z())});
+  std::sort(points.begin(), points.end());
+  EXPECT_EQ(points, (std::vector<std::array<double, 3>>{{-1, 0, 5}, {0, -1, 5}, {0, 0, 5}}));
+  const auto face_normal =
+      CGAL::Polygon_mesh_processing::compute_face_normal(*mesh.faces().begin(), mesh);
+  EXPECT_NEAR(face_normal.z(), 1, 1e-15);
+  const Attributes a(mesh);
+  ASSERT_TRUE(a.normals);
+  for (const auto h : mesh.halfedges())
+    if (!mesh.is_border(h)) {
+      EXPECT_NEAR((*a.normals)[h].x(), 0, 1e-15);
+      EXPECT_NEAR((*a.normals)[h].y(), 0, 1e-15);
+      EXPECT_NEAR((*a.normals)[h].z(), 1, 1e-15);
+    }
+  fs::remove_all(folder);
+}
+
+}  // namespace corner_attributes

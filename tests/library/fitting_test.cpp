@@ -1,0 +1,358 @@
+// The fitting pass (docs/fitting.md) on tiny meshes with exact expectations, its guard, and the
+// nearest-point reading of corner values that it shares with the attributes policy and fast; and
+// its bounded mode on real meshes, checked by mesh_error's measure.
+#include "test_meshes.h"
+
+#include "evaluation/mesh_validity.h"
+#include "evaluation/surface_error.h"
+#include "io/mesh_io.h"
+
+#include <cgal_policies/Face_count_stop_predicate.h>
+#include <cgal_policies/Hausdorff_bounded_policies.h>
+#include <cgal_policies/Two_sided_fitter.h>
+#include <cgal_policies/internal/Border_curve.h>
+#include <cgal_policies/internal/Fit_guard.h>
+#include <cgal_policies/internal/nearest_corner_values.h>
+
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Surface_mesh_simplification/edge_collapse.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace SMS = CGAL::Surface_mesh_simplification;
+using namespace test_meshes;
+using cgal_policies::Two_sided_fit_options;
+using cgal_policies::Two_sided_fit_report;
+using cgal_policies::Two_sided_fitter;
+
+double radius(const Point& p) {
+  return std::sqrt(CGAL::to_double((p - CGAL::ORIGIN).squared_length()));
+}
+
+// The mean of | |x| - 1 | over a grid of points on every face: the distance to the unit sphere.
+double mean_distance_to_unit_sphere(const Mesh& mesh) {
+  double sum = 0;
+  std::size_t count = 0;
+  for (auto f : faces(mesh)) {
+    std::vector<Point> corners;
+    for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      corners.push_back(mesh.point(v));
+    for (int i = 0; i <= 4; ++i)
+      for (int j = 0; i + j <= 4; ++j) {
+        const double a = i / 4.0, b = j / 4.0, c = 1 - a - b;
+        const Point p(a * corners[0].x() + b * corners[1].x() + c * corners[2].x(),
+                      a * corners[0].y() + b * corners[1].y() + c * corners[2].y(),
+                      a * corners[0].z() + b * corners[1].z() + c * corners[2].z());
+        sum += std::abs(radius(p) - 1);
+        ++count;
+      }
+  }
+  return sum / double(count);
+}
+
+Mesh scaled(Mesh mesh, double factor) {
+  for (auto v : vertices(mesh)) {
+    const Point& p = mesh.point(v);
+    mesh.point(v) = Point(factor * p.x(), factor * p.y(), factor * p.z());
+  }
+  return mesh;
+}
+
+// Tiny meshes need far fewer input samples than the default, which suits real meshes.
+Two_sided_fit_options few_samples() {
+  Two_sided_fit_options options;
+  options.min_input_samples = 5000;
+  return options;
+}
+
+TEST(TwoSidedFitter, ACoarsePlaneOnThePlaneItApproximatesStaysExactlyAsItIs) {
+  const Mesh input = flat_grid(16);
+  const Mesh before = scaled(flat_grid(4), 4);  // the same square, coarser: no distance to lower
+  Mesh output = before;
+  const Two_sided_fit_report report = Two_sided_fitter<Mesh>(input, few_samples()).fit(output);
+  EXPECT_EQ(report.rounds, 0);  // the first round lowered nothing and was undone
+  EXPECT_EQ(report.flips, 0u);
+  for (auto v : vertices(output)) EXPECT_EQ(output.point(v), before.point(v));
+  for (auto f : faces(output))
+    EXPECT_EQ(halfedge(f, output), halfedge(f, before)) << "connectivity changed";
+}
+
+// flat_grid(16)'s square, coarser, its inner vertices lifted to z = 0.25.
+Mesh lifted_coarse_plane() {
+  Mesh mesh = scaled(flat_grid(4), 4);
+  for (auto v : vertices(mesh))
+    if (!CGAL::is_border(v, mesh)) {
+      const Point& p = mesh.point(v);
+      mesh.point(v) = Point(p.x(), p.y(), 0.25);
+    }
+  return mesh;
+}
+
+TEST(TwoSidedFitter, ACoarsePlaneLiftedOffItsPlaneComesBackToIt) {
+  const Mesh input = flat_grid(16);
+  Mesh output = lifted_coarse_plane();
+  const Two_sided_fit_report report = Two_sided_fitter<Mesh>(input, few_samples()).fit(output);
+  EXPECT_GE(report.rounds, 1);
+  EXPECT_TRUE(is_valid_triangle_mesh(output));
+  EXPECT_EQ(output.number_of_faces(), 32u);
+  for (auto v : vertices(output)) {
+    const Point& p = output.point(v);
+    if (CGAL::is_border(v, output)) {  // on the input's border curve, the square's sides
+      EXPECT_EQ(p.z(), 0.0) << p;
+      EXPECT_NEAR((std::min)({p.x(), 16 - p.x(), p.y(), 16 - p.y()}), 0.0, 1e-12) << p;
+    } else {
+      EXPECT_LT(std::abs(p.z()), 0.125) << p;  // at least half way back
+    }
+  }
+}
+
+TEST(TwoSidedFitter, ABorderVertexOffTheInputsBorderNeverMovesFartherFromIt) {
+  const Mesh input = flat_grid(16);
+  Mesh output = lifted_coarse_plane();
+  Mesh::Vertex_index off;  // the middle of the square's side y = 0, pushed out of the square
+  for (auto v : vertices(output))
+    if (output.point(v) == Point(8, 0, 0)) off = v;
+  ASSERT_TRUE(off.is_valid());
+  output.point(off) = Point(8, -0.5, 0);
+  const Two_sided_fit_report report = Two_sided_fitter<Mesh>(input, few_samples()).fit(output);
+  EXPECT_GE(report.rounds, 1);
+  for (auto v : vertices(output)) {
+    const Point& p = output.point(v);
+    if (v == off) {  // its distance to the side y = 0, which stays the nearest part of the border
+      EXPECT_TRUE(p.x() > 0 && p.x() < 16 && p.y() <= 0) << p;
+      EXPECT_LE(std::hypot(p.y(), p.z()), 0.5) << p;
+    } else if (CGAL::is_border(v, output)) {  // on the input's border curve, the square's sides
+      EXPECT_EQ(p.z(), 0.0) << p;
+      EXPECT_NEAR((std::min)({p.x(), 16 - p.x(), p.y(), 16 - p.y()}), 0.0, 1e-12) << p;
+    }
+  }
+}
+
+TEST(TwoSidedFitter, ACoarseSphereInsideAFineOneMovesEveryVertexTowardIt) {
+  const Mesh input = loop_sphere(3);
+  const Mesh before = scaled(loop_sphere(1), 0.9);
+  Mesh output = before;
+  const Two_sided_fit_report report = Two_sided_fitter<Mesh>(input, few_samples()).fit(output);
+  EXPECT_EQ(report.refused_moves, 0u);
+  for (auto v : vertices(output))
+    EXPECT_LT(std::abs(radius(output.point(v)) - 1), std::abs(radius(before.point(v)) - 1));
+  EXPECT_LT(mean_distance_to_unit_sphere(output), 0.5 * mean_distance_to_unit_sphere(before));
+  EXPECT_TRUE(is_valid_triangle_mesh(output));
+}
+
+// --max-normal-angle takes 0 (found by fuzz_policies: the fitter's contract started above 0).
+TEST(TwoSidedFitter, AtAZeroAngleNoFaceNormalTurns) {
+  const Mesh input = flat_grid(16);
+  Mesh output = lifted_coarse_plane();
+  const Mesh before = output;
+  Two_sided_fit_options options = few_samples();
+  options.max_normal_angle_deg = 0;
+  Two_sided_fitter<Mesh>(input, options).fit(output);
+  for (auto f : faces(output)) {
+    const auto n = CGAL::Polygon_mesh_processing::compute_face_normal(f, output);
+    const auto m = CGAL::Polygon_mesh_processing::compute_face_normal(f, before);
+    EXPECT_EQ(n, m) << f;
+  }
+}
+
+TEST(TwoSidedFitter, TwoFitsOfTheSameMeshesGiveTheSamePoints) {
+  const Mesh input = loop_sphere(3);
+  Mesh first = scaled(loop_sphere(1), 0.9), second = first;
+  Two_sided_fitter<Mesh>(input, few_samples()).fit(first);
+  Two_sided_fitter<Mesh>(input, few_samples()).fit(second);
+  for (auto v : vertices(first)) EXPECT_EQ(first.point(v), second.point(v));
+}
+
+// A 4 x 4 grid of points in z = 0 but for (1, 1), raised; `diagonal` splits the middle square
+// from (1, 1) to (2, 2) when true (as every other square), from (2, 1) to (1, 2) when false.
+Mesh raised_grid(bool diagonal) {
+  std::vector<Point> points;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) points.emplace_back(i, j, i == 1 && j == 1 ? 1 : 0);
+  const auto id = [](int i, int j) { return j * 4 + i; };
+  std::vector<std::array<int, 3>> triangles;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) {
+      if (i == 1 && j == 1 && !diagonal) {
+        triangles.push_back({id(i, j), id(i + 1, j), id(i, j + 1)});
+        triangles.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+        continue;
+      }
+      triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return from_triangles(points, triangles);
+}
+
+TEST(TwoSidedFitter, FlipsTheEdgeThatMakesTheOutputTheInput) {
+  const Mesh input = raised_grid(true);
+  Mesh output = raised_grid(false);
+  Two_sided_fit_options options;
+  options.rounds = 1;
+  const Two_sided_fit_report report = Two_sided_fitter<Mesh>(input, options).fit(output);
+  EXPECT_GE(report.flips, 1u);  // others may follow the moves made before the flips
+  const auto v = [](int i, int j) { return Mesh::Vertex_index(std::uint32_t(j * 4 + i)); };
+  EXPECT_TRUE(halfedge(v(1, 1), v(2, 2), output).second);
+  EXPECT_FALSE(halfedge(v(2, 1), v(1, 2), output).second);
+  EXPECT_TRUE(is_valid_triangle_mesh(output));
+}
+
+TEST(TwoSidedFitter, WithoutFlipsTheConnectivityStays) {
+  const Mesh input = raised_grid(true);
+  Mesh output = raised_grid(false);
+  Two_sided_fit_options options;
+  options.flips = false;
+  const Two_sided_fit_report report = Two_sided_fitter<Mesh>(input, options).fit(output);
+  EXPECT_EQ(report.flips, 0u);
+  const auto v = [](int i, int j) { return Mesh::Vertex_index(std::uint32_t(j * 4 + i)); };
+  EXPECT_TRUE(halfedge(v(2, 1), v(1, 2), output).second);
+}
+
+using cgal_policies::internal::Fit_guard;
+using cgal_policies::internal::Indexed_triangle;
+
+Indexed_triangle indexed(std::array<std::uint32_t, 3> ids, std::array<Eigen::Vector3d, 3> points) {
+  return {ids, points};
+}
+
+// Faces (a, b, c) and (b, a, d) of the quad a d b c; a flip makes (a, d, c) and (d, b, c).
+struct Quad {
+  Eigen::Vector3d a, b, c, d;
+  std::vector<Indexed_triangle> faces() const {
+    return {indexed({0, 1, 2}, {a, b, c}), indexed({1, 0, 3}, {b, a, d})};
+  }
+  std::vector<Indexed_triangle> flipped() const {
+    return {indexed({0, 3, 2}, {a, d, c}), indexed({3, 1, 2}, {d, b, c})};
+  }
+};
+
+TEST(FitGuard, RefusesAFlipThatFoldsAndAllowsOneThatDoesNot) {
+  const Eigen::Vector3d up(0, 0, 1);
+  // b lies inside the triangle a d c: the flipped faces would overlap, one of them upside down.
+  const Quad folding{{0, 0, 0}, {1, 0, 0}, {2, 1, 0}, {2, -1, 0}};
+  for (const double angle : {90.0, 180.0}) {  // at 180 degrees the overlap alone refuses it
+    Fit_guard guard(folding.faces(), angle, 1.0);
+    EXPECT_FALSE(guard.allows({0, 1}, folding.flipped(), {up, up})) << angle;
+  }
+  const Quad convex{{0, 0, 0}, {2, 0, 0}, {1, 1, 0}, {1, -1, 0}};
+  Fit_guard guard(convex.faces(), 90, 1.0);
+  EXPECT_TRUE(guard.allows({0, 1}, convex.flipped(), {up, up}));
+}
+
+TEST(FitGuard, RefusesAMoveThroughAnotherFace) {
+  const Indexed_triangle low = indexed({0, 1, 2}, {{{0, 0, 0}, {4, 0, 0}, {0, 4, 0}}});
+  const Indexed_triangle high = indexed({3, 4, 5}, {{{1, 1, 1}, {2, 1, 1}, {1, 2, 1}}});
+  Fit_guard guard({low, high}, 180, 1.0);
+  Indexed_triangle through = high;
+  through.points[0] = {1, 1, -1};  // its corner dives below the low face
+  EXPECT_FALSE(guard.allows({1}, {through}, {guard.reference(1)}));
+  Indexed_triangle above = high;
+  above.points[0] = {1, 1, 0.5};
+  EXPECT_TRUE(guard.allows({1}, {above}, {guard.reference(1)}));
+}
+
+// Two unit squares 0.1 apart, side by side in z = 0: four border edges each.
+Mesh two_squares() {
+  return from_triangles({{0, 0, 0},
+                         {1, 0, 0},
+                         {1, 1, 0},
+                         {0, 1, 0},
+                         {1.1, 0, 0},
+                         {2.1, 0, 0},
+                         {2.1, 1, 0},
+                         {1.1, 1, 0}},
+                        {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}});
+}
+
+TEST(BorderCurve, APointSlidesAlongItsOwnBorderAndNeverJumpsToTheNextOne) {
+  const Mesh mesh = two_squares();
+  const cgal_policies::internal::Border_curve curve(mesh, get(CGAL::vertex_point, mesh));
+  // The other square's side is nearer the target; the point stays on its own side.
+  EXPECT_EQ(curve.nearest_along({1, 0.5, 0}, {1.09, 0.5, 0}, 0.3), Eigen::Vector3d(1, 0.5, 0));
+  EXPECT_NEAR(curve.distance({1.09, 0.5, 0}), 0.01, 1e-12);
+  // Within reach only its own edge: the corner of it; with more, along the next edge.
+  EXPECT_EQ(curve.nearest_along({0.5, 0, 0}, {0, 0.5, 0}, 0.3), Eigen::Vector3d(0, 0, 0));
+  EXPECT_EQ(curve.nearest_along({0.5, 0, 0}, {0, 0.5, 0}, 1.0), Eigen::Vector3d(0, 0.5, 0));
+}
+
+// Two unit right triangles in the plane z = 0, the second two units along x.
+std::array<Eigen::Vector3d, 3> plane_triangle(std::size_t k) {
+  const Eigen::Vector3d shift(2.0 * double(k), 0, 0);
+  return {Eigen::Vector3d(0, 0, 0) + shift, Eigen::Vector3d(1, 0, 0) + shift,
+          Eigen::Vector3d(0, 1, 0) + shift};
+}
+
+TEST(NearestTrianglePoint, TakesTheNearestOfTheTrianglesItIsAllowed) {
+  using cgal_policies::internal::nearest_triangle_point;
+  const Eigen::Vector3d p(2.25, 0.25, 1);  // above the inside of the second triangle
+  const auto all = nearest_triangle_point(
+      p, 2, [](std::size_t) { return true; }, plane_triangle);
+  EXPECT_EQ(all.triangle, 1u);
+  EXPECT_EQ(all.weights, (std::array<double, 3>{0.5, 0.25, 0.25}));
+  // Without the second, the first one's nearest point is its corner (1, 0, 0).
+  const auto first = nearest_triangle_point(
+      p, 2, [](std::size_t k) { return k == 0; }, plane_triangle);
+  EXPECT_EQ(first.triangle, 0u);
+  EXPECT_EQ(first.weights, (std::array<double, 3>{0, 1, 0}));
+}
+
+// Blends like a texture coordinate, and marks every blend with a tenth more, so that a test can
+// tell a blend from a corner's own value.
+struct Marked_blend {
+  static double blend(const std::array<double, 3>& corner, const std::array<double, 3>& w) {
+    return w[0] * corner[0] + w[1] * corner[1] + w[2] * corner[2] + 0.1;
+  }
+};
+
+TEST(ValuesAtWeights, ACornerKeepsItsOwnValueAndAnywhereElseBlends) {
+  using cgal_policies::internal::values_at_weights;
+  const std::array<double, 3> corner{1, 2, 4};
+  EXPECT_EQ(values_at_weights<Marked_blend>(corner, {0, 1, 0}), 2.0);
+  EXPECT_DOUBLE_EQ(values_at_weights<Marked_blend>(corner, {0.5, 0.25, 0.25}), 2.1);
+  EXPECT_DOUBLE_EQ(values_at_weights<Marked_blend>(corner, {0, 0.5, 0.5}), 3.1);
+}
+
+// The fitting pass in bounded mode (docs/fitting.md): the bound the simplification kept holds after
+// the pass too, by the evaluator, and the mean error drops.
+TEST(TwoSidedFitter, BoundedModeKeepsTheBoundOfTheRun) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  for (const std::string name : {"bunny.obj", "fandisk.obj", "teapot.obj", "cow.obj"}) {
+    const Mesh original = apps::read_triangle_mesh(test_meshes::data_file(name));
+    const double tolerance = 0.005;
+    cgal_policies::Hausdorff_bounded_options options;
+    options.beta = tolerance;
+    Mesh mesh = original;
+    {
+      const cgal_policies::Hausdorff_bounded_policies<Mesh, Kernel> policies(mesh, options);
+      SMS::edge_collapse(
+          mesh,
+          cgal_policies::Face_count_stop_predicate<Mesh>(mesh, original.number_of_faces() / 100),
+          CGAL::parameters::get_cost(policies.get_cost())
+              .get_placement(policies.get_placement())
+              .filter(policies.get_filter()));
+    }
+    mesh.collect_garbage();
+    const apps::Mesh_error before = apps::measure_mesh_error(original, mesh);
+    cgal_policies::Two_sided_fit_options fit_options;
+    fit_options.tolerance = tolerance;
+    const cgal_policies::Two_sided_fit_report fit =
+        cgal_policies::Two_sided_fitter<Mesh>(original, fit_options).fit(mesh);
+    EXPECT_GT(fit.moves, 0u) << name;
+    const apps::Mesh_error after = apps::measure_mesh_error(original, mesh);
+    EXPECT_LE(after.hausdorff, tolerance * after.bbox_diagonal)
+        << name << ": Hausdorff " << after.hausdorff / after.bbox_diagonal;
+    EXPECT_LT(after.mean_a_to_b + after.mean_b_to_a, before.mean_a_to_b + before.mean_b_to_a)
+        << name;
+    EXPECT_TRUE(apps::check_mesh_validity(mesh).valid) << name;
+  }
+}
+
+}  // namespace

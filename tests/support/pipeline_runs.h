@@ -1,0 +1,45 @@
+// How the tests run a policy of the registry: through the apps' pipeline (apps/pipeline/), the
+// policy alone (no fitting pass) with its defaults, down to a face count.
+#ifndef CGAL_POLICIES_TESTS_SUPPORT_PIPELINE_RUNS_H
+#define CGAL_POLICIES_TESTS_SUPPORT_PIPELINE_RUNS_H
+
+#include "pipeline/Pipeline.h"
+#include "pipeline/policy_registry.h"
+
+#include <gtest/gtest.h>
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace pipeline_runs {
+
+// Every policy of the registry by name, for parameterised tests.
+inline std::vector<std::string> policy_names() {
+  std::vector<std::string> names;
+  for (const apps::Policy_entry& p : apps::policy_registry()) names.push_back(p.name);
+  return names;
+}
+
+// The options of the named policy alone down to `target` faces.
+inline cgal_policies::Simplification_options policy_alone(const std::string& policy,
+                                                          std::size_t target) {
+  const apps::Policy_entry* entry = apps::find_policy(policy);
+  if (!entry) throw std::invalid_argument("no policy " + policy);
+  cgal_policies::Simplification_options options;
+  options.policy = entry->policy;
+  options.fit = false;
+  options.target = cgal_policies::Face_target::faces(target);
+  return options;
+}
+
+// Simplifies `mesh` in place (left compact) with those options.
+inline cgal_policies::Simplification_report simplify(apps::Mesh& mesh, const std::string& policy,
+                                                     std::size_t target) {
+  return apps::Pipeline(policy_alone(policy, target)).run(mesh);
+}
+
+}  // namespace pipeline_runs
+
+#endif  // CGAL_POLICIES_TESTS_SUPPORT_PIPELINE_RUNS_H
