@@ -54,6 +54,11 @@ void print_help() {
          "                        closer than T (a fraction of IN's diagonal; default 0, off)\n"
          "  --min-component N     first drop every connected component of fewer than N faces\n"
          "                        but the largest (a whole number; default 0, off)\n"
+         "  --parts N             cut IN into N cells (a power of two) simplified at once and\n"
+         "                        stitched (docs/scale.md); 0: one per 500,000 faces (default),\n"
+         "                        1: none. Not with --max-error or hausdorff\n"
+         "  --threads N           cores for the cells, 0: all (default); the output is the same\n"
+         "                        for every N\n"
          "  --drop-small-pieces   when no collapse is left short of the target, drop the\n"
          "                        smallest connected components whole, smallest first, until\n"
          "                        it is met; never the largest\n"
@@ -152,6 +157,8 @@ void add_report_fields(Json_object& report, const cgal_policies::Simplification_
   report.add("vanished_components", run.dropped_after.components);
   report.add("vanished_faces", run.dropped_after.faces);
   report.add("max_error", options.max_error);
+  report.add("parts", run.parts);
+  report.add("threads", options.threads);
   report.add("smooth_iterations", options.smoothing.iterations);
   report.add("smooth_refused_moves", run.smoothing_refused_moves);
   report.add("smooth_seconds", run.seconds(Simplification_pass::smoothing));

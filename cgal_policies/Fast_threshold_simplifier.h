@@ -22,6 +22,7 @@
 #include <cgal_policies/Fast_threshold_options.h>
 #include <cgal_policies/internal/Fast_threshold_engine.h>
 #include <cgal_policies/internal/mesh_geometry.h>
+#include <cgal_policies/internal/part_vertex_maps.h>
 #include <cgal_policies/internal/plane_quadrics.h>
 
 #include <CGAL/assertions.h>
@@ -107,6 +108,20 @@ class Fast_threshold_simplifier {
     std::vector<std::array<Values, 3>> corners;  // with kCarries: per triangle, as the faces hold
     std::vector<std::uint32_t> materials;        // them, and each face's material when it has one
     Eigen::AlignedBox3d box;
+    // A part of a partitioned run: its locked vertices and their origins are kept through the
+    // rebuild (internal/Mesh_parts.h).
+    std::vector<char> locked;
+    std::vector<CGAL::SM_Vertex_index> origin;
+    if constexpr (internal::Is_surface_mesh<TriangleMesh>::value) {
+      using Vertex = typename TriangleMesh::Vertex_index;
+      const auto lock = internal::find_vertex_map<bool>(tm, internal::kLockedVertexMap);
+      const auto from = internal::find_vertex_map<Vertex>(tm, internal::kOriginVertexMap);
+      if (lock && from)
+        for (const Vertex v : tm.vertices()) {
+          locked.push_back((*lock)[v]);
+          origin.push_back((*from)[v]);
+        }
+    }
     {
       auto quadrics = get(CGAL::dynamic_vertex_property_t<internal::Quadric>(), tm);
       internal::accumulate_vertex_quadrics(tm, vpm, Face_weighting::unit, m_options.border_weight,
@@ -116,7 +131,8 @@ class Fast_threshold_simplifier {
         put(index, v, int(vertex_data.size()));
         const Eigen::Vector3d p = internal::to_eigen(get(vpm, v));
         box.extend(p);
-        vertex_data.push_back({p, get(quadrics, v), bool(is_border(v, tm))});
+        vertex_data.push_back({p, get(quadrics, v), bool(is_border(v, tm)),
+                               !locked.empty() && locked[vertex_data.size()]});
       }
       for (auto f : faces(tm)) {
         const auto h = halfedge(f, tm);
@@ -140,8 +156,9 @@ class Fast_threshold_simplifier {
     report.target_reached = outcome.target_reached;
 
     std::vector<Eigen::Vector3d> points;
-    std::vector<int> origins;
-    engine.extract(points, triangles, kCarries ? &corners : nullptr, kCarries ? &origins : nullptr);
+    std::vector<int> origins, kept;
+    engine.extract(points, triangles, kCarries ? &corners : nullptr, kCarries ? &origins : nullptr,
+                   locked.empty() ? nullptr : &kept);
     const typename Attributes::Kinds kinds =
         attributes ? attributes->kinds() : typename Attributes::Kinds{};
     CGAL::clear(tm);  // which resets the internal point map too
@@ -152,6 +169,17 @@ class Fast_threshold_simplifier {
     for (const Eigen::Vector3d& p : points) {
       new_vertices.push_back(add_vertex(tm));
       put(new_vpm, new_vertices.back(), internal::to_point<Point>(p));
+    }
+    if constexpr (internal::Is_surface_mesh<TriangleMesh>::value) {
+      using Vertex = typename TriangleMesh::Vertex_index;
+      if (!locked.empty()) {
+        auto lock = tm.template add_property_map<Vertex, bool>(internal::kLockedVertexMap).first;
+        auto from = tm.template add_property_map<Vertex, Vertex>(internal::kOriginVertexMap).first;
+        for (std::size_t i = 0; i < new_vertices.size(); ++i) {
+          lock[new_vertices[i]] = locked[std::size_t(kept[i])];
+          from[new_vertices[i]] = origin[std::size_t(kept[i])];
+        }
+      }
     }
     for (std::size_t k = 0; k < triangles.size(); ++k) {
       const auto& t = triangles[k];

@@ -28,11 +28,18 @@
 //                         run's bound when it has one (default below)
 //   fit_options           the fitter's rounds, samples and steps (its max_normal_angle_deg and
 //                         tolerance come from this struct)
+//   parts                 cells of a partitioned run (docs/scale.md), rounded down to a power
+//                         of two; 0: one per kFacesPerPart input faces (default), 1: none. A
+//                         partitioned run needs no max_error, no hausdorff and no on_collapse
+//                         (it runs whole otherwise)
+//   threads               cores for the parts, 0: all of them (default); the output is the same
+//                         for every count
 //   progress              called now and then with the pass running, how far it is in [0, 1], and
 //                         the face count; may be empty
 //   pass_done             called after each pass that ran, the mesh compact; may be empty
 //   interrupted           polled during the passes; true stops the run where it is, with
-//                         Stop_reason::interrupted, the mesh still valid; may be empty
+//                         Stop_reason::interrupted, the mesh still valid; may be empty. In a
+//                         partitioned run it is polled from several threads at once
 //   on_collapse           called after every collapse of an edge-collapse policy with the vertex
 //                         removed and the one kept (already at its new point); may be empty
 #ifndef CGAL_POLICIES_SIMPLIFICATION_OPTIONS_H
@@ -75,10 +82,24 @@ struct Simplification_options {
   Smoothing_options smoothing;
   bool fit = true;
   Two_sided_fit_options fit_options;
+  std::size_t parts = 0;
+  std::size_t threads = 0;
   std::function<void(Simplification_pass pass, double done, std::size_t faces)> progress;
   std::function<void(Simplification_pass pass)> pass_done;
   std::function<bool()> interrupted;
   std::function<void(CGAL::SM_Vertex_index removed, CGAL::SM_Vertex_index kept)> on_collapse;
+
+  // Input faces per cell of a partitioned run when `parts` is 0.
+  static constexpr std::size_t kFacesPerPart = 500000;
+
+  // The cells a run on `input_faces` faces is cut into: 1 when it runs whole.
+  std::size_t cell_count(std::size_t input_faces) const {
+    if (max_error > 0 || policy == Simplification_policy::hausdorff || on_collapse) return 1;
+    const std::size_t wanted = parts > 0 ? parts : input_faces / kFacesPerPart;
+    std::size_t cells = 1;
+    while (2 * cells <= wanted) cells *= 2;
+    return cells;
+  }
 
   // The two-sided bound the run keeps, a fraction of the input's diagonal: max_error, else the
   // hausdorff policy's own tolerance in its global mode; 0 when there is none.

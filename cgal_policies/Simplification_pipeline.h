@@ -9,9 +9,10 @@
 //   6. fit             Two_sided_fitter against the input, within the run's bound
 // The mesh is left compact (garbage collected). Options: Simplification_options (every default in
 // the library); the report: Simplification_report. Deterministic: the same mesh and options give
-// the same bytes. The interruption callback stops the run between collapses or between passes,
-// the mesh valid and simplified as far as it got.
-// Usage:
+// the same bytes, for any thread count. A large mesh is cut into cells (Simplification_options::
+// parts; docs/scale.md): the policy runs on each at once, cut vertices locked, then on the
+// stitched whole; the fit likewise. The interruption callback stops the run between collapses or
+// between passes, the mesh valid and simplified as far as it got. Usage:
 //   cgal_policies::Simplification_options options;  // the library's default pipeline
 //   options.target = cgal_policies::Face_target::ratio(0.1);
 //   const cgal_policies::Simplification_report report =
@@ -29,6 +30,7 @@
 #include <cgal_policies/internal/run_cgal_policies.h>
 #include <cgal_policies/internal/run_fast_policy.h>
 #include <cgal_policies/internal/run_hausdorff_policy.h>
+#include <cgal_policies/internal/run_partitioned.h>
 #include <cgal_policies/internal/run_quadric_policies.h>
 #include <cgal_policies/small_components.h>
 
@@ -81,11 +83,29 @@ class Simplification_pipeline {
       timed(report, Simplification_pass::components, [&] {
         report.dropped_before = drop_components_smaller_than(mesh, m_options.min_component);
       });
+    // A large mesh is cut into cells, for the policy and the fit to run on every core.
+    std::optional<internal::Spatial_cells> cells;
+    if (const std::size_t count = m_options.cell_count(mesh.number_of_faces()); count > 1)
+      cells.emplace(internal::face_centroids(mesh), count);
+    report.parts = cells ? cells->size() : 1;
     // 3: the policy; its seconds exclude the garbage collection after it.
     timed(report, Simplification_pass::simplification, [&] {
-      const internal::Policy_outcome outcome = run_policy(mesh, report.target_faces);
-      report.stop_reason = outcome.stop_reason;
-      report.attributes_carried = outcome.attributes_carried;
+      std::optional<internal::Policy_outcome> outcome;
+      if (cells) {
+        // Reported once, from this thread, for the whole.
+        Simplification_options part_options = m_options;
+        part_options.progress = nullptr;
+        outcome = internal::run_partitioned(
+            mesh, report.target_faces, *cells, m_options.threads, [&](Mesh& m, std::size_t target) {
+              return run_policy(m, target, &m == &mesh ? m_options : part_options);
+            });
+      }
+      if (!outcome) {
+        report.parts = 1;
+        outcome = run_policy(mesh, report.target_faces, m_options);
+      }
+      report.stop_reason = outcome->stop_reason;
+      report.attributes_carried = outcome->attributes_carried;
     });
     mesh.collect_garbage();
     if (m_options.pass_done) m_options.pass_done(Simplification_pass::simplification);
@@ -102,7 +122,8 @@ class Simplification_pipeline {
         Two_sided_fit_options fit = m_options.fit_options;
         fit.max_normal_angle_deg = m_options.max_normal_angle_deg;
         fit.tolerance = report.bound;
-        report.fit = internal::fit_carrying_corner_values(mesh, input, fit);
+        report.fit = report.parts > 1 ? fit_by_cells(mesh, input, *cells, fit)
+                                      : internal::fit_carrying_corner_values(mesh, input, fit);
         report.fitted = true;
       });
     report.output_faces = mesh.number_of_faces();
@@ -131,30 +152,56 @@ class Simplification_pipeline {
     return true;
   }
 
-  internal::Policy_outcome run_policy(Mesh& mesh, std::size_t target) const {
-    switch (m_options.policy) {
+  static internal::Policy_outcome run_policy(Mesh& mesh, std::size_t target,
+                                             const Simplification_options& options) {
+    switch (options.policy) {
       case Simplification_policy::gh:
-        return internal::run_gh(mesh, target, m_options);
+        return internal::run_gh(mesh, target, options);
       case Simplification_policy::gh_probabilistic:
-        return internal::run_gh_probabilistic(mesh, target, m_options);
+        return internal::run_gh_probabilistic(mesh, target, options);
       case Simplification_policy::lt:
-        return internal::run_lt(mesh, target, m_options);
+        return internal::run_lt(mesh, target, options);
       case Simplification_policy::classic:
-        return internal::run_classic(mesh, target, m_options);
+        return internal::run_classic(mesh, target, options);
       case Simplification_policy::curvature:
-        return internal::run_curvature(mesh, target, m_options);
+        return internal::run_curvature(mesh, target, options);
       case Simplification_policy::fusion:
-        return internal::run_fusion(mesh, target, m_options);
+        return internal::run_fusion(mesh, target, options);
       case Simplification_policy::fast:
-        return internal::run_fast(mesh, target, m_options);
+        return internal::run_fast(mesh, target, options);
       case Simplification_policy::hausdorff:
-        return internal::run_hausdorff(mesh, target, m_options);
+        return internal::run_hausdorff(mesh, target, options);
       case Simplification_policy::attributes:
-        return internal::run_attributes(mesh, target, m_options);
+        return internal::run_attributes(mesh, target, options);
     }
     CGAL_error_msg("unknown Simplification_policy");
     return {};
   }
+
+  // The fit by cells, in two halves of its rounds: over the run's cells, then over cells cut
+  // elsewhere (at the 35% quantiles), so that the vertices pinned on the first cuts move too.
+  Two_sided_fit_report fit_by_cells(Mesh& mesh, const Mesh& input,
+                                    const internal::Spatial_cells& cells,
+                                    Two_sided_fit_options fit) const {
+    const int rounds = fit.rounds;
+    fit.rounds = (rounds + 1) / 2;
+    Two_sided_fit_report report =
+        internal::fit_partitioned(mesh, input, cells, m_options.threads, fit);
+    fit.rounds = rounds - fit.rounds;
+    if (fit.rounds == 0) return report;
+    const internal::Spatial_cells shifted(internal::face_centroids(input), cells.size(),
+                                          kShiftedQuantile);
+    const Two_sided_fit_report second =
+        internal::fit_partitioned(mesh, input, shifted, m_options.threads, fit);
+    report.rounds += second.rounds;
+    report.moves += second.moves;
+    report.refused_moves += second.refused_moves;
+    report.flips += second.flips;
+    report.refused_flips += second.refused_flips;
+    return report;
+  }
+
+  static constexpr double kShiftedQuantile = 0.35;
 
   // Returns the moves a bounded smoothing refused.
   std::size_t smooth(Mesh& mesh, const Mesh& input, double bound) const {

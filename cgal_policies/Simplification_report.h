@@ -20,7 +20,8 @@ struct Simplification_report {
   std::size_t input_faces = 0, input_vertices = 0;
   std::size_t target_faces = 0;
   std::size_t output_faces = 0, output_vertices = 0;
-  double bound = 0;  // the two-sided bound the run kept (Simplification_options), 0: none
+  double bound = 0;       // the two-sided bound the run kept (Simplification_options), 0: none
+  std::size_t parts = 1;  // the cells of a partitioned run; 1: it ran whole
   Border_pair_contraction_report merged;
   Dropped_components dropped_before;  // min_component
   Dropped_components dropped_after;   // drop_small_pieces

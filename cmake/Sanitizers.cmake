@@ -4,6 +4,16 @@ if(CGAL_POLICIES_SANITIZE)
   add_link_options(-fsanitize=address,undefined)
 endif()
 
+# ThreadSanitizer, for the partitioned runs' threads (.ci/run builds only the tests of them).
+option(CGAL_POLICIES_TSAN "Build with ThreadSanitizer" OFF)
+if(CGAL_POLICIES_TSAN)
+  if(CGAL_POLICIES_SANITIZE)
+    message(FATAL_ERROR "CGAL_POLICIES_TSAN and CGAL_POLICIES_SANITIZE do not go together")
+  endif()
+  add_compile_options(-fsanitize=thread -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=thread)
+endif()
+
 # The fuzz targets (fuzz/) live in the sanitized build, made by clang.
 if(CGAL_POLICIES_SANITIZE AND CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
   set(CGAL_POLICIES_FUZZ_DEFAULT ON)

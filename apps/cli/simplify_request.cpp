@@ -32,6 +32,8 @@ Simplify_request take_simplify_request(Command_line& cli) {
   options.min_component =
       std::size_t(cli.take_whole_number("min-component", 0, kMaxCount).value_or(0));
   options.drop_small_pieces = cli.take_flag("drop-small-pieces");
+  options.threads = std::size_t(cli.take_whole_number("threads", 0, 4096).value_or(0));
+  options.parts = std::size_t(cli.take_whole_number("parts", 0, 1 << 20).value_or(0));
   options.smoothing = take_smoothing_options(cli);
   take_fit_options(cli, choice.named, options);
   request.json = cli.take_flag("json");

@@ -32,6 +32,7 @@ extern CGAL_POLICIES_APPS_POLICY_RUN(run_attributes);
 // pipeline.cpp
 extern template cgal_policies::Two_sided_fit_report
 cgal_policies::internal::fit_carrying_corner_values<apps::Point>(
-    apps::Mesh&, const apps::Mesh&, cgal_policies::Two_sided_fit_options);
+    apps::Mesh&, const apps::Mesh&, cgal_policies::Two_sided_fit_options,
+    const std::function<bool(CGAL::SM_Vertex_index)>&);
 
 #endif  // CGAL_POLICIES_APPS_PIPELINE_PIPELINE_H

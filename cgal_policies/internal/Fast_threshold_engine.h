@@ -31,6 +31,7 @@ struct Fast_threshold_vertex {
   Eigen::Vector3d point;
   Quadric quadric;  // face planes plus border planes (docs/quadric_core.md)
   bool border = false;
+  bool locked = false;  // never moved nor removed (the cut vertices of a partitioned run)
 };
 
 // No corner values: the engine moves points only.
@@ -121,17 +122,20 @@ class Fast_threshold_engine {
     return outcome;
   }
 
-  // With corner values: `corners` and `origins` (the constructor's index of each triangle) too.
+  // With corner values: `corners` and `origins` (the constructor's index of each triangle) too;
+  // `kept`, when given, gets the constructor's index of each point.
   void extract(std::vector<Eigen::Vector3d>& points, std::vector<std::array<int, 3>>& triangles,
                std::vector<std::array<Values, 3>>* corners = nullptr,
-               std::vector<int>* origins = nullptr) {
+               std::vector<int>* origins = nullptr, std::vector<int>* kept = nullptr) {
     compact();
     std::vector<int> index(m_vertices.size(), -1);
     points.clear();
+    if (kept) kept->clear();
     for (std::size_t v = 0; v < m_vertices.size(); ++v)
       if (!m_vertices[v].removed) {
         index[v] = int(points.size());
         points.push_back(m_vertices[v].data.point);
+        if (kept) kept->push_back(int(v));
       }
     triangles.clear();
     for (const Triangle& t : m_triangles)
@@ -250,6 +254,7 @@ class Fast_threshold_engine {
     const Fast_threshold_vertex& vb = m_vertices[b].data;
     const Quadric q = va.quadric + vb.quadric;
     constexpr double kRefused = std::numeric_limits<double>::infinity();
+    if (va.locked || vb.locked) return kRefused;
     if (carries_values()) {
       placement = optimal_placement(q, va.point, vb.point).point;
       switch (seam_collapse_rule(
@@ -411,7 +416,7 @@ class Fast_threshold_engine {
     const int b = m_triangles[triangle].v[(corner + 1) % 3];
     Eigen::Vector3d p;
     const double error = edge_error(a, b, triangle, p);
-    if (carries_values() && !std::isfinite(error)) return false;  // refused by the seam rules
+    if (!std::isfinite(error)) return false;  // refused: a locked end, or the seam rules
     if (!satisfies_link_condition(a, b) || turns_too_far(a, b, p) || turns_too_far(b, a, p))
       return false;
     if (carries_values() && !plan_corner_values(a, b, p)) return false;

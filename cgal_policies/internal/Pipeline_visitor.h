@@ -7,11 +7,13 @@
 #define CGAL_POLICIES_INTERNAL_PIPELINE_VISITOR_H
 
 #include <cgal_policies/Simplification_options.h>
+#include <cgal_policies/internal/part_vertex_maps.h>
 
 #include <CGAL/Surface_mesh_simplification/Edge_collapse_visitor_base.h>
 
 #include <algorithm>
 #include <cstddef>
+#include <optional>
 
 namespace cgal_policies {
 namespace internal {
@@ -47,7 +49,9 @@ class Pipeline_visitor : public CGAL::Surface_mesh_simplification::Edge_collapse
         m_start(mesh.number_of_faces()),
         m_target(target),
         m_options(&options),
-        m_pending(&pending) {}
+        m_pending(&pending),
+        m_lock(find_vertex_map<bool>(mesh, kLockedVertexMap)),
+        m_origin(find_vertex_map<CGAL::SM_Vertex_index>(mesh, kOriginVertexMap)) {}
 
   template <class Profile, class OptionalCost>
   void OnSelected(const Profile&, const OptionalCost&, std::size_t, std::size_t) {
@@ -55,9 +59,15 @@ class Pipeline_visitor : public CGAL::Surface_mesh_simplification::Edge_collapse
   }
   template <class Profile, class Vertex>
   void OnCollapsed(const Profile& profile, Vertex kept) {
+    const Vertex removed = kept == profile.v0() ? profile.v1() : profile.v0();
+    // A part's locked vertex goes only in a collapse of zero length, which CGAL makes without the
+    // filter (Locked_vertex_filter.h): the vertex kept, at the same point, stands for it.
+    if (m_lock && (*m_lock)[removed]) {
+      (*m_lock)[kept] = true;
+      (*m_origin)[kept] = (*m_origin)[removed];
+    }
     m_pending->report(*m_options);  // collapses of zero-length edges come without a selection
-    if (m_options->on_collapse)
-      *m_pending = {true, kept == profile.v0() ? profile.v1() : profile.v0(), kept};
+    if (m_options->on_collapse) *m_pending = {true, removed, kept};
     if (m_options->progress && (++m_collapses & 1023) == 0) {
       const std::size_t faces = m_mesh->number_of_faces();
       m_options->progress(Simplification_pass::simplification,
@@ -70,6 +80,10 @@ class Pipeline_visitor : public CGAL::Surface_mesh_simplification::Edge_collapse
   std::size_t m_start, m_target;
   const Simplification_options* m_options;
   Pending_collapse* m_pending;
+  // A part of a partitioned run's (part_vertex_maps.h); none otherwise.
+  std::optional<typename Mesh::template Property_map<CGAL::SM_Vertex_index, bool>> m_lock;
+  std::optional<typename Mesh::template Property_map<CGAL::SM_Vertex_index, CGAL::SM_Vertex_index>>
+      m_origin;
   std::size_t m_collapses = 0;
 };
 

@@ -15,6 +15,7 @@
 #include <CGAL/boost/graph/iterator.h>
 
 #include <cmath>
+#include <functional>
 #include <vector>
 
 namespace cgal_policies {
@@ -49,20 +50,21 @@ void carry_corner_values(CGAL::Surface_mesh<Point>& mesh, const CGAL::Surface_me
   }
 }
 
-// Fits `mesh` to `original` with `options`; with corner values, as the header says.
+// Fits `mesh` to `original` with `options`; with corner values, as the header says. The vertices
+// `pinned` names, when given, stay too.
 template <class Point>
-Two_sided_fit_report fit_carrying_corner_values(CGAL::Surface_mesh<Point>& mesh,
-                                                const CGAL::Surface_mesh<Point>& original,
-                                                Two_sided_fit_options options) {
+Two_sided_fit_report fit_carrying_corner_values(
+    CGAL::Surface_mesh<Point>& mesh, const CGAL::Surface_mesh<Point>& original,
+    Two_sided_fit_options options, const std::function<bool(CGAL::SM_Vertex_index)>& pinned = {}) {
   using Mesh = CGAL::Surface_mesh<Point>;
   if (!Corner_attributes<Point>(mesh).any_corner_values())
-    return Two_sided_fitter<Mesh>(original, options).fit(mesh);
+    return Two_sided_fitter<Mesh>(original, options).fit(mesh, pinned);
   options.flips = false;
   const Mesh before = mesh;
   const Corner_attribute_carrier<Point> seams(mesh);
   const Two_sided_fit_report report =
       Two_sided_fitter<Mesh>(original, options).fit(mesh, [&](typename Mesh::Vertex_index v) {
-        return seams.seam_edges_at(v) > 0;
+        return seams.seam_edges_at(v) > 0 || (pinned && pinned(v));
       });
   carry_corner_values(mesh, before);
   return report;

@@ -12,6 +12,7 @@
 #include <cgal_policies/Seam_keeping_filter.h>
 #include <cgal_policies/Seam_keeping_placement.h>
 #include <cgal_policies/Simplification_options.h>
+#include <cgal_policies/internal/Locked_vertex_filter.h>
 #include <cgal_policies/internal/Pipeline_visitor.h>
 #include <cgal_policies/internal/Policy_outcome.h>
 
@@ -53,8 +54,9 @@ Policy_outcome run_edge_collapse(
   Carrier* const carried = carrier.active() ? &carrier : nullptr;
   if (carried && with_carrier) with_carrier(*carried);
   const Seam_keeping_placement<Point, GetPlacement> placement(base_placement, carried);
-  using Filter_keeping_seams = Seam_keeping_filter<Point, Filter>;
-  const Filter_keeping_seams filter(base_filter, carried);
+  using Filter_keeping_seams = Seam_keeping_filter<Point, Locked_vertex_filter<Point, Filter>>;
+  const Filter_keeping_seams filter(Locked_vertex_filter<Point, Filter>(mesh, base_filter),
+                                    carried);
   Pending_collapse pending;
   const Face_count_stop_predicate<Mesh> stop(mesh, target_faces, options.time_limit_seconds,
                                              options.interrupted);

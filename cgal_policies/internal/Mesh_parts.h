@@ -1,0 +1,211 @@
+// A CGAL::Surface_mesh cut into the parts of a partitioned run and put back together. Each face
+// goes to the cell of its centroid (Spatial_cells.h); a part is a mesh of its cell's faces with
+// their corner attributes and materials, each vertex knowing the whole mesh's vertex it stands for
+// (kOriginVertexMap). A vertex whose faces lie in more than one cell is on a cut: it
+// is locked in every part (the vertex property map kLockedVertexMap), so that no collapse and no
+// fitting move touches it and the parts still meet exactly along the cuts when they are stitched.
+// A vertex whose faces in one cell form several fans (they are separated by faces of other cells)
+// is one part vertex per fan, each locked; stitching makes them one vertex again.
+#ifndef CGAL_POLICIES_INTERNAL_MESH_PARTS_H
+#define CGAL_POLICIES_INTERNAL_MESH_PARTS_H
+
+#include <cgal_policies/Corner_attributes.h>
+#include <cgal_policies/internal/Spatial_cells.h>
+#include <cgal_policies/internal/mesh_geometry.h>
+#include <cgal_policies/internal/part_vertex_maps.h>
+
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace cgal_policies {
+namespace internal {
+
+// The cell of every face of `mesh` (which holds no garbage), by its centroid.
+template <class Point>
+std::vector<std::uint32_t> face_cells(const CGAL::Surface_mesh<Point>& mesh,
+                                      const Spatial_cells& cells) {
+  std::vector<std::uint32_t> cell(mesh.number_of_faces());
+  for (const auto f : mesh.faces()) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      sum += to_eigen(mesh.point(v));
+    cell[std::size_t(f)] = std::uint32_t(cells.cell_of(sum / 3));
+  }
+  return cell;
+}
+
+// The face centroids of `mesh`, to build the cells on.
+template <class Point>
+std::vector<Eigen::Vector3d> face_centroids(const CGAL::Surface_mesh<Point>& mesh) {
+  std::vector<Eigen::Vector3d> centroids;
+  centroids.reserve(mesh.number_of_faces());
+  for (const auto f : mesh.faces()) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      sum += to_eigen(mesh.point(v));
+    centroids.push_back(sum / 3);
+  }
+  return centroids;
+}
+
+// The corner values and materials of face i of `to` from the corners `corners[i]` of the mesh
+// `from[i]`: `to` was made by polygon_soup_to_polygon_mesh from `polygons`, whose vertex j is
+// vertex j of `to` and whose polygon i is its face i, its corners in the order of corners[i].
+template <class Point>
+void copy_corner_values(const std::vector<const CGAL::Surface_mesh<Point>*>& from,
+                        const std::vector<std::array<CGAL::SM_Halfedge_index, 3>>& corners,
+                        const std::vector<std::vector<std::size_t>>& polygons,
+                        CGAL::Surface_mesh<Point>& to) {
+  using Attributes = Corner_attributes<Point>;
+  if (from.empty() || !Attributes(*from.front()).any()) return;
+  const Attributes target = Attributes::add(to, Attributes(*from.front()).kinds());
+  std::size_t i = 0;
+  const CGAL::Surface_mesh<Point>* read = nullptr;  // the mesh `source` reads, while it stays
+  std::optional<Attributes> source;
+  for (const auto f : to.faces()) {
+    if (from[i] != read) source.emplace(*(read = from[i]));
+    if (target.materials) (*target.materials)[f] = (*source->materials)[read->face(corners[i][0])];
+    for (const auto h : CGAL::halfedges_around_face(to.halfedge(f), to)) {
+      const std::size_t k =
+          std::size_t(std::find(polygons[i].begin(), polygons[i].end(), std::size_t(to.target(h))) -
+                      polygons[i].begin());
+      target.set_values(h, source->values(corners[i][k]));
+    }
+    ++i;
+  }
+}
+
+// The part of cell `c` of `mesh` (manifold, no garbage), `cell` giving each face's cell.
+// Without corner values when `with_values` is false (the input of a partitioned fit).
+template <class Point>
+CGAL::Surface_mesh<Point> mesh_part(const CGAL::Surface_mesh<Point>& mesh,
+                                    const std::vector<std::uint32_t>& cell, std::uint32_t c,
+                                    bool with_values = true) {
+  using Mesh = CGAL::Surface_mesh<Point>;
+  using Halfedge = typename Mesh::Halfedge_index;
+  const auto in_cell = [&](Halfedge h) {
+    return !mesh.is_border(h) && cell[std::size_t(mesh.face(h))] == c;
+  };
+  // The corner h (target v) belongs to the fan of v's faces in the cell that starts at the
+  // returned corner: the first one going clockwise, or halfedge(v) when the fan is v's whole star.
+  const auto fan_start = [&](Halfedge h) {
+    for (Halfedge g = h;;) {
+      const Halfedge before = mesh.prev(mesh.opposite(g));
+      if (!in_cell(before)) return g;
+      if (before == h) return mesh.halfedge(mesh.target(h));
+      g = before;
+    }
+  };
+  const auto locked = [&](typename Mesh::Vertex_index v) {
+    for (const Halfedge h : CGAL::halfedges_around_target(v, mesh))
+      if (!mesh.is_border(h) && cell[std::size_t(mesh.face(h))] != c) return true;
+    return false;
+  };
+  // Part vertices by their fan's first corner, in the order the faces reach them.
+  std::vector<std::pair<Halfedge, std::uint32_t>> fans;
+  std::vector<std::array<Halfedge, 3>> corners;
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  for (const auto f : mesh.faces()) {
+    if (cell[std::size_t(f)] != c) continue;
+    std::array<Halfedge, 3> face_corners;
+    std::array<std::uint32_t, 3> t;
+    int k = 0;
+    for (const Halfedge h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      face_corners[k] = h;
+      t[k++] = std::uint32_t(std::size_t(fan_start(h)));
+    }
+    corners.push_back(face_corners);
+    triangles.push_back(t);
+  }
+  std::vector<std::uint32_t> starts;
+  for (const auto& t : triangles) starts.insert(starts.end(), t.begin(), t.end());
+  std::sort(starts.begin(), starts.end());
+  starts.erase(std::unique(starts.begin(), starts.end()), starts.end());
+
+  std::vector<Point> points;
+  for (const std::uint32_t start : starts)
+    points.push_back(mesh.point(mesh.target(Halfedge(start))));
+  std::vector<std::vector<std::size_t>> polygons;
+  for (const auto& t : triangles) {
+    std::vector<std::size_t> polygon;
+    for (const std::uint32_t start : t)
+      polygon.push_back(
+          std::size_t(std::lower_bound(starts.begin(), starts.end(), start) - starts.begin()));
+    polygons.push_back(std::move(polygon));
+  }
+  Mesh part;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, part);
+  auto lock =
+      part.template add_property_map<typename Mesh::Vertex_index, bool>(kLockedVertexMap, false)
+          .first;
+  auto origin =
+      part.template add_property_map<typename Mesh::Vertex_index, typename Mesh::Vertex_index>(
+              kOriginVertexMap)
+          .first;
+  for (const auto v : part.vertices()) {
+    origin[v] = mesh.target(Halfedge(starts[std::size_t(v)]));
+    lock[v] = locked(origin[v]);
+  }
+  if (with_values)
+    copy_corner_values(std::vector<const Mesh*>(corners.size(), &mesh), corners, polygons, part);
+  return part;
+}
+
+// The parts put back together: the vertices of every part (their origin shared where they are
+// locked) and their faces, part after part, with their corner values.
+template <class Point>
+CGAL::Surface_mesh<Point> stitch_parts(const std::vector<CGAL::Surface_mesh<Point>>& parts,
+                                       std::size_t whole_vertices) {
+  using Mesh = CGAL::Surface_mesh<Point>;
+  constexpr std::size_t kNew = std::size_t(-1);
+  std::vector<std::size_t> shared(whole_vertices, kNew);
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  std::vector<std::array<CGAL::SM_Halfedge_index, 3>> corners;
+  std::vector<const Mesh*> owner;
+  for (const Mesh& m : parts) {
+    const auto lock = find_vertex_map<bool>(m, kLockedVertexMap);
+    const auto origin = find_vertex_map<CGAL::SM_Vertex_index>(m, kOriginVertexMap);
+    std::vector<std::size_t> index(m.num_vertices(), kNew);
+    for (const auto v : m.vertices()) {
+      std::size_t& slot = shared[std::size_t((*origin)[v])];
+      const bool is_locked = (*lock)[v];
+      if (is_locked && slot != kNew) {
+        index[std::size_t(v)] = slot;
+        continue;
+      }
+      index[std::size_t(v)] = points.size();
+      if (is_locked) slot = points.size();
+      points.push_back(m.point(v));
+    }
+    for (const auto f : m.faces()) {
+      std::vector<std::size_t> polygon;
+      std::array<CGAL::SM_Halfedge_index, 3> c;
+      int k = 0;
+      for (const auto h : CGAL::halfedges_around_face(m.halfedge(f), m)) {
+        polygon.push_back(index[std::size_t(m.target(h))]);
+        c[k++] = h;
+      }
+      polygons.push_back(std::move(polygon));
+      corners.push_back(c);
+      owner.push_back(&m);
+    }
+  }
+  Mesh whole;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, whole);
+  copy_corner_values(owner, corners, polygons, whole);
+  return whole;
+}
+
+}  // namespace internal
+}  // namespace cgal_policies
+
+#endif  // CGAL_POLICIES_INTERNAL_MESH_PARTS_H

@@ -1,0 +1,32 @@
+// The vertex property maps of a part of a partitioned run (Mesh_parts.h), which the policies, the
+// fast engine and the fitter read.
+#ifndef CGAL_POLICIES_INTERNAL_PART_VERTEX_MAPS_H
+#define CGAL_POLICIES_INTERNAL_PART_VERTEX_MAPS_H
+
+#include <CGAL/Surface_mesh.h>
+
+#include <optional>
+#include <string>
+
+namespace cgal_policies {
+namespace internal {
+
+// bool: the vertex is on a cut, so no collapse and no fitting move may touch it.
+inline const std::string kLockedVertexMap = "v:cgal_policies_locked";
+// The vertex of the whole mesh that a part's vertex stands for; property maps follow
+// collect_garbage(), so the parts may be simplified in place.
+inline const std::string kOriginVertexMap = "v:cgal_policies_origin";
+
+// The vertex map of that name and type, when the mesh has it.
+template <class T, class Point>
+std::optional<typename CGAL::Surface_mesh<Point>::template Property_map<CGAL::SM_Vertex_index, T>>
+find_vertex_map(const CGAL::Surface_mesh<Point>& mesh, const std::string& name) {
+  const auto found = mesh.template property_map<CGAL::SM_Vertex_index, T>(name);
+  if (!found.second) return std::nullopt;
+  return found.first;
+}
+
+}  // namespace internal
+}  // namespace cgal_policies
+
+#endif  // CGAL_POLICIES_INTERNAL_PART_VERTEX_MAPS_H

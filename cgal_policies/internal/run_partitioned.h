@@ -1,0 +1,132 @@
+// A partitioned simplification (docs/scale.md): the mesh cut into the cells of Spatial_cells, each
+// part simplified on its own core toward twice its share of the target with its cut vertices
+// locked, the parts stitched back along the cuts, and a last run of the same policy over the much
+// smaller whole down to the exact target; then, likewise, the fitting pass cell by cell. The output
+// depends on the cells, never on the thread count.
+#ifndef CGAL_POLICIES_INTERNAL_RUN_PARTITIONED_H
+#define CGAL_POLICIES_INTERNAL_RUN_PARTITIONED_H
+
+#include <cgal_policies/internal/Mesh_parts.h>
+#include <cgal_policies/internal/Policy_outcome.h>
+#include <cgal_policies/internal/Spatial_cells.h>
+#include <cgal_policies/internal/fit_carrying_corner_values.h>
+#include <cgal_policies/internal/for_each_part.h>
+
+#include <CGAL/boost/graph/Euler_operations.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace cgal_policies {
+namespace internal {
+
+constexpr double kPartShare = 2;
+
+// The locked vertices of a part: the ones the stitching needs.
+template <class Point>
+std::size_t locked_vertex_count(const CGAL::Surface_mesh<Point>& part) {
+  const auto lock = find_vertex_map<bool>(part, kLockedVertexMap);
+  std::size_t count = 0;
+  for (const auto v : part.vertices()) count += (*lock)[v];
+  return count;
+}
+
+// Collapses the edges of zero length that CGAL's edge collapse may collapse, as it does before
+// anything else, and collects the garbage. CGAL asks no filter for those collapses, so a part
+// would otherwise lose one of two locked vertices at the same point.
+template <class Point>
+void collapse_zero_length_edges(CGAL::Surface_mesh<Point>& mesh) {
+  using Mesh = CGAL::Surface_mesh<Point>;
+  std::vector<typename Mesh::Edge_index> zero_length;
+  for (const auto e : mesh.edges())
+    if (mesh.point(mesh.source(mesh.halfedge(e))) == mesh.point(mesh.target(mesh.halfedge(e))))
+      zero_length.push_back(e);
+  if (zero_length.empty()) return;
+  // The third corner of a face beside the edge must keep two other edges (collapse_edge's
+  // precondition), and an inner edge between two border vertices would pinch the border.
+  const auto keeps_its_faces = [&](typename Mesh::Halfedge_index h) {
+    return mesh.is_border(h) ||
+           CGAL::halfedges_around_target(mesh.target(mesh.next(h)), mesh).size() > 2;
+  };
+  for (const auto e : zero_length) {
+    if (mesh.is_removed(e)) continue;
+    const auto h = mesh.halfedge(e);
+    if (!mesh.is_border(e) && mesh.is_border(mesh.source(h)) && mesh.is_border(mesh.target(h)))
+      continue;
+    if (keeps_its_faces(h) && keeps_its_faces(mesh.opposite(h)) &&
+        CGAL::Euler::does_satisfy_link_condition(e, mesh))
+      CGAL::Euler::collapse_edge(e, mesh);
+  }
+  mesh.collect_garbage();
+}
+
+// Simplifies `mesh` (no garbage) as the header says, run_policy(part or whole, target) running
+// the policy. Nothing, and `mesh` with only its edges of zero length collapsed, when a part lost a
+// locked vertex all the same: the caller then runs the policy on the whole.
+template <class Point, class RunPolicy>
+std::optional<Policy_outcome> run_partitioned(CGAL::Surface_mesh<Point>& mesh, std::size_t target,
+                                              const Spatial_cells& cells, std::size_t threads,
+                                              const RunPolicy& run_policy) {
+  using Mesh = CGAL::Surface_mesh<Point>;
+  collapse_zero_length_edges(mesh);
+  const std::vector<std::uint32_t> cell = face_cells(mesh, cells);
+  std::vector<Mesh> parts(cells.size());
+  std::vector<char> kept_locks(cells.size(), 1);
+  // Each part keeps kPartShare times its share of the target: the last collapses, which set where
+  // the detail goes, are left to the run over the whole, ordered across the cuts.
+  const double share = std::min(1.0, kPartShare * double(target) / double(mesh.number_of_faces()));
+  for_each_part(parts.size(), threads, [&](std::size_t c) {
+    parts[c] = mesh_part(mesh, cell, std::uint32_t(c));
+    const std::size_t locked = locked_vertex_count(parts[c]);
+    run_policy(parts[c], std::size_t(std::llround(share * double(parts[c].number_of_faces()))));
+    parts[c].collect_garbage();
+    kept_locks[c] = locked_vertex_count(parts[c]) == locked;
+  });
+  for (const char kept : kept_locks)
+    if (!kept) return std::nullopt;
+  mesh = stitch_parts(parts, mesh.number_of_vertices());
+  parts.clear();
+  return run_policy(mesh, target);
+}
+
+// The fitting pass by cells: each cell of the output fitted to the same cell of the input, on its
+// own core, its cut vertices pinned, then the cells stitched back. The reports add up; the rounds
+// are those of the cell that ran the most.
+template <class Point>
+Two_sided_fit_report fit_partitioned(CGAL::Surface_mesh<Point>& mesh,
+                                     const CGAL::Surface_mesh<Point>& input,
+                                     const Spatial_cells& cells, std::size_t threads,
+                                     const Two_sided_fit_options& options) {
+  using Mesh = CGAL::Surface_mesh<Point>;
+  const std::vector<std::uint32_t> output_cell = face_cells(mesh, cells);
+  const std::vector<std::uint32_t> input_cell = face_cells(input, cells);
+  std::vector<Mesh> parts(cells.size());
+  std::vector<Two_sided_fit_report> reports(cells.size());
+  for_each_part(parts.size(), threads, [&](std::size_t c) {
+    parts[c] = mesh_part(mesh, output_cell, std::uint32_t(c));
+    const Mesh near = mesh_part(input, input_cell, std::uint32_t(c), false);
+    if (parts[c].number_of_faces() == 0 || near.number_of_faces() == 0) return;
+    const auto lock = find_vertex_map<bool>(parts[c], kLockedVertexMap);
+    reports[c] = fit_carrying_corner_values(parts[c], near, options,
+                                            [&](CGAL::SM_Vertex_index v) { return (*lock)[v]; });
+  });
+  mesh = stitch_parts(parts, mesh.number_of_vertices());
+  Two_sided_fit_report report;
+  for (const Two_sided_fit_report& r : reports) {
+    report.rounds = (std::max)(report.rounds, r.rounds);
+    report.moves += r.moves;
+    report.refused_moves += r.refused_moves;
+    report.flips += r.flips;
+    report.refused_flips += r.refused_flips;
+  }
+  return report;
+}
+
+}  // namespace internal
+}  // namespace cgal_policies
+
+#endif  // CGAL_POLICIES_INTERNAL_RUN_PARTITIONED_H
