@@ -1,6 +1,7 @@
-// Runs body(i) for every i < n, each on its own, on up to `threads` cores (0: all of them) with
-// TBB when the build links it (CGAL_POLICIES_WITH_TBB), one after the other otherwise. Each i
-// writes only what belongs to it, so the result does not depend on the schedule.
+// Runs body(i) for every i < n, each on its own, on up to `threads` cores (0: all of them): with
+// TBB when the build links it (CGAL_POLICIES_WITH_TBB), else on std::threads that take the next i
+// in turn. Each i writes only what belongs to it, so the result does not depend on the schedule.
+// The first exception a body throws is thrown again once every thread has stopped.
 #ifndef CGAL_POLICIES_INTERNAL_FOR_EACH_PART_H
 #define CGAL_POLICIES_INTERNAL_FOR_EACH_PART_H
 
@@ -10,6 +11,13 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+#else
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
 #endif
 
 namespace cgal_policies {
@@ -26,8 +34,24 @@ void for_each_part(std::size_t n, std::size_t threads, const Body& body) {
                       });
   });
 #else
-  static_cast<void>(threads);
-  for (std::size_t i = 0; i < n; ++i) body(i);
+  if (threads == 0) threads = (std::max)(1u, std::thread::hardware_concurrency());
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  const auto work = [&] {
+    for (std::size_t i; (i = next++) < n;) try {
+        body(i);
+      } catch (...) {
+        const std::lock_guard<std::mutex> lock(failure_mutex);
+        if (!failure) failure = std::current_exception();
+        next = n;
+      }
+  };
+  std::vector<std::thread> workers;
+  for (std::size_t t = 1; t < (std::min)(threads, n); ++t) workers.emplace_back(work);
+  work();
+  for (std::thread& worker : workers) worker.join();
+  if (failure) std::rethrow_exception(failure);
 #endif
 }
 
