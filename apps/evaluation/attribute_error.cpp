@@ -110,6 +110,7 @@ std::size_t flipped_uv_faces(const Mesh& a, const Attributes& in_a, const Mesh& 
                              const Attributes& in_b) {
   Face_tree tree(faces(a).first, faces(a).second, a);
   tree.accelerate_distance_queries();
+  tree.build();  // before the threads query it (surface_error.cpp says why)
   const std::vector<Mesh::Face_index> b_faces(faces(b).begin(), faces(b).end());
   std::vector<char> flipped(b_faces.size(), 0);
   for_each_index_in_parallel(b_faces.size(), [&](std::size_t i) {
@@ -150,6 +151,7 @@ Attribute_error measure_attribute_error(const Mesh& a, const Mesh& b, std::size_
   const std::vector<Face_sample> points = sample_face_points(a, samples);
   Face_tree tree(faces(b).first, faces(b).second, b);
   tree.accelerate_distance_queries();
+  tree.build();  // before the threads query it (surface_error.cpp says why)
   std::vector<double> uv_distance(points.size(), kNone), angle(points.size(), kNone),
       color_distances(points.size(), kNone);
   for_each_index_in_parallel(points.size(), [&](std::size_t i) {

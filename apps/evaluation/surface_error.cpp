@@ -104,6 +104,9 @@ One_sided one_sided_distance(const Mesh& from, const Mesh& to, std::size_t sampl
 
   Distance_tree tree(faces(to).first, faces(to).second, to);
   tree.accelerate_distance_queries();
+  // Built here, not lazily by the first query: CGAL 5.5 sorts the primitives while it builds,
+  // and another thread's query reads them meanwhile (ThreadSanitizer caught it).
+  tree.build();
   const std::vector<double> d2 = squared_distances(points, tree);
 
   One_sided result;
