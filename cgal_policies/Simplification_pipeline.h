@@ -122,8 +122,9 @@ class Simplification_pipeline {
         Two_sided_fit_options fit = m_options.fit_options;
         fit.max_normal_angle_deg = m_options.max_normal_angle_deg;
         fit.tolerance = report.bound;
-        report.fit = report.parts > 1 ? fit_by_cells(mesh, input, *cells, fit)
-                                      : internal::fit_carrying_corner_values(mesh, input, fit);
+        report.fit = report.parts > 1
+                         ? internal::fit_by_cells(mesh, input, *cells, m_options.threads, fit)
+                         : internal::fit_carrying_corner_values(mesh, input, fit);
         report.fitted = true;
       });
     report.output_faces = mesh.number_of_faces();
@@ -177,31 +178,6 @@ class Simplification_pipeline {
     CGAL_error_msg("unknown Simplification_policy");
     return {};
   }
-
-  // The fit by cells, in two halves of its rounds: over the run's cells, then over cells cut
-  // elsewhere (at the 35% quantiles), so that the vertices pinned on the first cuts move too.
-  Two_sided_fit_report fit_by_cells(Mesh& mesh, const Mesh& input,
-                                    const internal::Spatial_cells& cells,
-                                    Two_sided_fit_options fit) const {
-    const int rounds = fit.rounds;
-    fit.rounds = (rounds + 1) / 2;
-    Two_sided_fit_report report =
-        internal::fit_partitioned(mesh, input, cells, m_options.threads, fit);
-    fit.rounds = rounds - fit.rounds;
-    if (fit.rounds == 0) return report;
-    const internal::Spatial_cells shifted(internal::face_centroids(input), cells.size(),
-                                          kShiftedQuantile);
-    const Two_sided_fit_report second =
-        internal::fit_partitioned(mesh, input, shifted, m_options.threads, fit);
-    report.rounds += second.rounds;
-    report.moves += second.moves;
-    report.refused_moves += second.refused_moves;
-    report.flips += second.flips;
-    report.refused_flips += second.refused_flips;
-    return report;
-  }
-
-  static constexpr double kShiftedQuantile = 0.35;
 
   // Returns the moves a bounded smoothing refused.
   std::size_t smooth(Mesh& mesh, const Mesh& input, double bound) const {

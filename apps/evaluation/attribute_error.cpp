@@ -1,9 +1,9 @@
 #include "attribute_error.h"
 
-#include "for_each_index_in_parallel.h"
 #include "surface_error.h"
 
 #include <cgal_policies/Corner_attributes.h>
+#include <cgal_policies/internal/for_each_in_parallel.h>
 #include <cgal_policies/internal/triangle_closest_point.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -113,7 +113,7 @@ std::size_t flipped_uv_faces(const Mesh& a, const Attributes& in_a, const Mesh& 
   tree.build();  // before the threads query it (surface_error.cpp says why)
   const std::vector<Mesh::Face_index> b_faces(faces(b).begin(), faces(b).end());
   std::vector<char> flipped(b_faces.size(), 0);
-  for_each_index_in_parallel(b_faces.size(), [&](std::size_t i) {
+  cgal_policies::internal::for_each_in_parallel(b_faces.size(), 0, [&](std::size_t i) {
     const auto c = corners_of(b_faces[i], b);
     const Point centroid = CGAL::centroid(b.point(target(c[0], b)), b.point(target(c[1], b)),
                                           b.point(target(c[2], b)));
@@ -154,7 +154,7 @@ Attribute_error measure_attribute_error(const Mesh& a, const Mesh& b, std::size_
   tree.build();  // before the threads query it (surface_error.cpp says why)
   std::vector<double> uv_distance(points.size(), kNone), angle(points.size(), kNone),
       color_distances(points.size(), kNone);
-  for_each_index_in_parallel(points.size(), [&](std::size_t i) {
+  cgal_policies::internal::for_each_in_parallel(points.size(), 0, [&](std::size_t i) {
     const Face_sample& s = points[i];
     const Mesh::Face_index f = tree.closest_point_and_primitive(s.point).second;
     const auto corners_a = corners_of(s.face, a), corners_b = corners_of(f, b);

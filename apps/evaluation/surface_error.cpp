@@ -1,7 +1,6 @@
 #include "surface_error.h"
 
-#include "for_each_index_in_parallel.h"
-
+#include <cgal_policies/internal/for_each_in_parallel.h>
 #include <cgal_policies/internal/triangle_closest_point.h>
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
@@ -58,8 +57,8 @@ using Distance_tree = CGAL::AABB_tree<
 // Squared distances from points to the surface in the tree, computed on every core.
 std::vector<double> squared_distances(const std::vector<Point>& points, const Distance_tree& tree) {
   std::vector<double> result(points.size());
-  for_each_index_in_parallel(points.size(),
-                             [&](std::size_t i) { result[i] = tree.squared_distance(points[i]); });
+  cgal_policies::internal::for_each_in_parallel(
+      points.size(), 0, [&](std::size_t i) { result[i] = tree.squared_distance(points[i]); });
   return result;
 }
 

@@ -28,21 +28,7 @@
 namespace cgal_policies {
 namespace internal {
 
-// The cell of every face of `mesh` (which holds no garbage), by its centroid.
-template <class Point>
-std::vector<std::uint32_t> face_cells(const CGAL::Surface_mesh<Point>& mesh,
-                                      const Spatial_cells& cells) {
-  std::vector<std::uint32_t> cell(mesh.number_of_faces());
-  for (const auto f : mesh.faces()) {
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-      sum += to_eigen(mesh.point(v));
-    cell[std::size_t(f)] = std::uint32_t(cells.cell_of(sum / 3));
-  }
-  return cell;
-}
-
-// The face centroids of `mesh`, to build the cells on.
+// The face centroids of `mesh` (which holds no garbage), to build the cells on and to cut by.
 template <class Point>
 std::vector<Eigen::Vector3d> face_centroids(const CGAL::Surface_mesh<Point>& mesh) {
   std::vector<Eigen::Vector3d> centroids;
@@ -54,6 +40,21 @@ std::vector<Eigen::Vector3d> face_centroids(const CGAL::Surface_mesh<Point>& mes
     centroids.push_back(sum / 3);
   }
   return centroids;
+}
+
+// The cell of every face, by its centroid.
+inline std::vector<std::uint32_t> face_cells(const std::vector<Eigen::Vector3d>& centroids,
+                                             const Spatial_cells& cells) {
+  std::vector<std::uint32_t> cell(centroids.size());
+  for (std::size_t f = 0; f < centroids.size(); ++f)
+    cell[f] = std::uint32_t(cells.cell_of(centroids[f]));
+  return cell;
+}
+
+template <class Point>
+std::vector<std::uint32_t> face_cells(const CGAL::Surface_mesh<Point>& mesh,
+                                      const Spatial_cells& cells) {
+  return face_cells(face_centroids(mesh), cells);
 }
 
 // The corner values and materials of face i of `to` from the corners `corners[i]` of the mesh

@@ -10,7 +10,7 @@
 #include <cgal_policies/internal/Policy_outcome.h>
 #include <cgal_policies/internal/Spatial_cells.h>
 #include <cgal_policies/internal/fit_carrying_corner_values.h>
-#include <cgal_policies/internal/for_each_part.h>
+#include <cgal_policies/internal/for_each_in_parallel.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 
@@ -79,7 +79,7 @@ std::optional<Policy_outcome> run_partitioned(CGAL::Surface_mesh<Point>& mesh, s
   // Each part keeps kPartShare times its share of the target: the last collapses, which set where
   // the detail goes, are left to the run over the whole, ordered across the cuts.
   const double share = std::min(1.0, kPartShare * double(target) / double(mesh.number_of_faces()));
-  for_each_part(parts.size(), threads, [&](std::size_t c) {
+  for_each_in_parallel(parts.size(), threads, [&](std::size_t c) {
     parts[c] = mesh_part(mesh, cell, std::uint32_t(c));
     const std::size_t locked = locked_vertex_count(parts[c]);
     run_policy(parts[c], std::size_t(std::llround(share * double(parts[c].number_of_faces()))));
@@ -93,20 +93,28 @@ std::optional<Policy_outcome> run_partitioned(CGAL::Surface_mesh<Point>& mesh, s
   return run_policy(mesh, target);
 }
 
-// The fitting pass by cells: each cell of the output fitted to the same cell of the input, on its
-// own core, its cut vertices pinned, then the cells stitched back. The reports add up; the rounds
-// are those of the cell that ran the most.
+// Adds the moves and flips of `from` to `to`; the rounds are the caller's to count.
+inline void add_fit_counts(Two_sided_fit_report& to, const Two_sided_fit_report& from) {
+  to.moves += from.moves;
+  to.refused_moves += from.refused_moves;
+  to.flips += from.flips;
+  to.refused_flips += from.refused_flips;
+}
+
+// The fitting pass by cells: each cell of the output fitted to the same cell of the input
+// (`input_cell`, each input face's cell), on its own core, its cut vertices pinned, then the cells
+// stitched back. The reports add up; the rounds are those of the cell that ran the most.
 template <class Point>
 Two_sided_fit_report fit_partitioned(CGAL::Surface_mesh<Point>& mesh,
                                      const CGAL::Surface_mesh<Point>& input,
+                                     const std::vector<std::uint32_t>& input_cell,
                                      const Spatial_cells& cells, std::size_t threads,
                                      const Two_sided_fit_options& options) {
   using Mesh = CGAL::Surface_mesh<Point>;
   const std::vector<std::uint32_t> output_cell = face_cells(mesh, cells);
-  const std::vector<std::uint32_t> input_cell = face_cells(input, cells);
   std::vector<Mesh> parts(cells.size());
   std::vector<Two_sided_fit_report> reports(cells.size());
-  for_each_part(parts.size(), threads, [&](std::size_t c) {
+  for_each_in_parallel(parts.size(), threads, [&](std::size_t c) {
     parts[c] = mesh_part(mesh, output_cell, std::uint32_t(c));
     const Mesh near = mesh_part(input, input_cell, std::uint32_t(c), false);
     if (parts[c].number_of_faces() == 0 || near.number_of_faces() == 0) return;
@@ -118,11 +126,33 @@ Two_sided_fit_report fit_partitioned(CGAL::Surface_mesh<Point>& mesh,
   Two_sided_fit_report report;
   for (const Two_sided_fit_report& r : reports) {
     report.rounds = (std::max)(report.rounds, r.rounds);
-    report.moves += r.moves;
-    report.refused_moves += r.refused_moves;
-    report.flips += r.flips;
-    report.refused_flips += r.refused_flips;
+    add_fit_counts(report, r);
   }
+  return report;
+}
+
+// The cells of the second half of a fit by cells are cut at these quantiles.
+constexpr double kShiftedQuantile = 0.35;
+
+// The fit by cells, in two halves of its rounds: over the run's cells, then over cells cut
+// elsewhere (kShiftedQuantile), so that the vertices pinned on the first cuts move too.
+template <class Point>
+Two_sided_fit_report fit_by_cells(CGAL::Surface_mesh<Point>& mesh,
+                                  const CGAL::Surface_mesh<Point>& input,
+                                  const Spatial_cells& cells, std::size_t threads,
+                                  Two_sided_fit_options fit) {
+  const std::vector<Eigen::Vector3d> centroids = face_centroids(input);
+  const int rounds = fit.rounds;
+  fit.rounds = (rounds + 1) / 2;
+  Two_sided_fit_report report =
+      fit_partitioned(mesh, input, face_cells(centroids, cells), cells, threads, fit);
+  fit.rounds = rounds - fit.rounds;
+  if (fit.rounds == 0) return report;
+  const Spatial_cells shifted(centroids, cells.size(), kShiftedQuantile);
+  const Two_sided_fit_report second =
+      fit_partitioned(mesh, input, face_cells(centroids, shifted), shifted, threads, fit);
+  report.rounds += second.rounds;
+  add_fit_counts(report, second);
   return report;
 }
 

@@ -1,9 +1,9 @@
 // Runs body(i) for every i < n, each on its own, on up to `threads` cores (0: all of them): with
 // TBB when the build links it (CGAL_POLICIES_WITH_TBB), else on std::threads that take the next i
-// in turn. Each i writes only what belongs to it, so the result does not depend on the schedule.
+// in turn. A body writes only what belongs to its i, so the result does not depend on the schedule.
 // The first exception a body throws is thrown again once every thread has stopped.
-#ifndef CGAL_POLICIES_INTERNAL_FOR_EACH_PART_H
-#define CGAL_POLICIES_INTERNAL_FOR_EACH_PART_H
+#ifndef CGAL_POLICIES_INTERNAL_FOR_EACH_IN_PARALLEL_H
+#define CGAL_POLICIES_INTERNAL_FOR_EACH_IN_PARALLEL_H
 
 #include <cstddef>
 
@@ -24,7 +24,7 @@ namespace cgal_policies {
 namespace internal {
 
 template <class Body>
-void for_each_part(std::size_t n, std::size_t threads, const Body& body) {
+void for_each_in_parallel(std::size_t n, std::size_t threads, const Body& body) {
 #ifdef CGAL_POLICIES_WITH_TBB
   tbb::task_arena arena(threads == 0 ? tbb::task_arena::automatic : int(threads));
   arena.execute([&] {
@@ -58,4 +58,4 @@ void for_each_part(std::size_t n, std::size_t threads, const Body& body) {
 }  // namespace internal
 }  // namespace cgal_policies
 
-#endif  // CGAL_POLICIES_INTERNAL_FOR_EACH_PART_H
+#endif  // CGAL_POLICIES_INTERNAL_FOR_EACH_IN_PARALLEL_H
