@@ -38,6 +38,54 @@ void add_fields(Json_object& json, const Attribute_error& error) {
   });
 }
 
+void add_fields(Json_object& report, const cgal_policies::Simplification_report& run,
+                const cgal_policies::Simplification_options& options, const Policy_entry& policy) {
+  using cgal_policies::Simplification_pass;
+  const double seconds = run.seconds(Simplification_pass::simplification);
+  report.add("input_faces", run.input_faces);
+  report.add("input_vertices", run.input_vertices);
+  report.add("target_faces", run.target_faces);
+  report.add("output_faces", run.output_faces);
+  report.add("output_vertices", run.output_vertices);
+  report.add("seconds", seconds);
+  report.add("total_seconds", run.total_seconds());  // every pass of the pipeline
+  report.add("faces_removed_per_second",
+             seconds > 0 ? (run.input_faces - run.output_faces) / seconds : 0.0);
+  report.add("stop_reason", to_string(run.stop_reason));
+  // Signed: dropping a last piece may overshoot the target.
+  report.add("target_gap_faces",
+             static_cast<long long>(run.output_faces) - static_cast<long long>(run.target_faces));
+  report.add("time_limit_seconds", options.time_limit_seconds);
+  report.add("min_component", options.min_component);
+  report.add("dropped_components", run.dropped_before.components);
+  report.add("dropped_component_faces", run.dropped_before.faces);
+  report.add("drop_small_pieces", options.drop_small_pieces);
+  report.add("vanished_components", run.dropped_after.components);
+  report.add("vanished_faces", run.dropped_after.faces);
+  report.add("max_error", options.max_error);
+  report.add("parts", run.parts);
+  report.add("threads", options.threads);
+  report.add("smooth_iterations", options.smoothing.iterations);
+  report.add("smooth_refused_moves", run.smoothing_refused_moves);
+  report.add("smooth_seconds", run.seconds(Simplification_pass::smoothing));
+  report.add("fit", options.fit);
+  if (run.fitted) {
+    report.add("fit_seconds", run.seconds(Simplification_pass::fit));
+    report.add("fit_rounds", run.fit.rounds);
+    report.add("fit_moves", run.fit.moves);
+    report.add("fit_refused_moves", run.fit.refused_moves);
+    report.add("fit_flips", run.fit.flips);
+    report.add("fit_refused_flips", run.fit.refused_flips);
+  }
+  report.add("merge_distance", options.merge_distance);
+  report.add("merged_pairs", run.merged.merged_pairs);
+  report.add("stitched_edges", run.merged.stitched_edges);
+  report.add("refused_pairs", run.merged.refused_pairs);
+  for (const auto& [reason, count] : run.merged.refused_by_reason)
+    report.add("refused_pairs_" + reason, count);
+  for (const Policy_option& o : policy.options) report.add("option_" + o.name, o.get(options));
+}
+
 const char* corner_attributes_word(bool input_had_them, bool carried) {
   if (!input_had_them) return "none";
   if (!carried)

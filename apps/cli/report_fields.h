@@ -7,6 +7,10 @@
 #include "evaluation/attribute_error.h"
 #include "evaluation/mesh_validity.h"
 #include "evaluation/surface_error.h"
+#include "pipeline/policy_registry.h"
+
+#include <cgal_policies/Simplification_options.h>
+#include <cgal_policies/Simplification_report.h>
 
 namespace apps {
 
@@ -14,6 +18,11 @@ void add_fields(Json_object& json, const Mesh_error& error);
 void add_fields(Json_object& json, const Mesh_validity& validity);
 // The fields that are there, none for an empty one.
 void add_fields(Json_object& json, const Attribute_error& error);
+
+// A run's report as simplify --json gives it (docs/cli.md), `policy` being options.policy's entry;
+// the Python module's report is the same object.
+void add_fields(Json_object& json, const cgal_policies::Simplification_report& run,
+                const cgal_policies::Simplification_options& options, const Policy_entry& policy);
 
 // The reports' word for a run's corner attributes: "carried" when the input had texture
 // coordinates, normals or colours (every policy carries them through its collapses), "none" when

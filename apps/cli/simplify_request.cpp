@@ -10,15 +10,14 @@
 
 namespace apps {
 
-Simplify_request take_simplify_request(Command_line& cli) {
-  Simplify_request request;
+Pipeline_request take_pipeline_request(Command_line& cli) {
+  Pipeline_request request;
   Policy_choice choice = take_policy_options(cli);
   request.policy = choice.policy;
   cgal_policies::Simplification_options& options = request.options;
   options = choice.options;
-  std::optional<double> ratio = cli.take_number("ratio");
-  const std::optional<double> faces = cli.take_whole_number("faces", 1, kMaxCount);
-  const std::optional<double> samples = cli.take_whole_number("samples", 1, kMaxCount);
+  request.ratio = cli.take_number("ratio");
+  request.faces = cli.take_whole_number("faces", 1, kMaxCount);
   const std::optional<double> max_error = cli.take_number("max-error");
   options.merge_distance = cli.take_number("merge-distance").value_or(0.0);
   if (!(options.merge_distance >= 0))
@@ -36,26 +35,36 @@ Simplify_request take_simplify_request(Command_line& cli) {
   options.parts = std::size_t(cli.take_whole_number("parts", 0, 1 << 20).value_or(0));
   options.smoothing = take_smoothing_options(cli);
   take_fit_options(cli, choice.named, options);
-  request.json = cli.take_flag("json");
-  request.measure = cli.take_flag("measure");
-  request.force = cli.take_flag("force");
-  request.quiet = cli.take_flag("quiet");
   if (max_error && !(*max_error > 0)) throw App_error(exit_usage, "--max-error must be positive");
   if (max_error && !cgal_policies::runs_edge_collapse(options.policy))
     throw App_error(exit_usage, "--max-error needs an edge-collapse policy; " +
                                     request.policy->name + " runs its own engine (try classic)");
   options.max_error = max_error.value_or(0.0);
+  if (options.smoothing.bounded && !(options.two_sided_bound() > 0))
+    throw App_error(exit_usage, "--smooth-bounded needs --max-error (or a policy's --tolerance)");
+  return request;
+}
+
+Simplify_request take_simplify_request(Command_line& cli) {
+  Simplify_request request;
+  Pipeline_request pipeline = take_pipeline_request(cli);
+  request.policy = pipeline.policy;
+  request.options = pipeline.options;
+  const std::optional<double> samples = cli.take_whole_number("samples", 1, kMaxCount);
+  request.json = cli.take_flag("json");
+  request.measure = cli.take_flag("measure");
+  request.force = cli.take_flag("force");
+  request.quiet = cli.take_flag("quiet");
   const std::vector<std::string> args = cli.positionals();
   if (args.size() < 2 || args.size() > 3)
     throw App_error(exit_usage, "usage: simplify IN OUT [RATIO] [options] (see --help)");
+  std::optional<double> ratio = pipeline.ratio;
   if (args.size() == 3) {
     if (ratio) throw App_error(exit_usage, "give RATIO or --ratio, not both");
     ratio = parse_number(args[2], "RATIO");
   }
-  options.target = face_target(ratio, faces);
+  request.options.target = face_target(ratio, pipeline.faces);
   if (samples) request.samples = std::size_t(*samples);
-  if (options.smoothing.bounded && !(options.two_sided_bound() > 0))
-    throw App_error(exit_usage, "--smooth-bounded needs --max-error (or a policy's --tolerance)");
   request.input = args[0];
   request.output = args[1];
   check_output_path(request.input, request.output, request.force);

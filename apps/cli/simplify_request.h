@@ -14,6 +14,19 @@
 
 namespace apps {
 
+// The pipeline's options of a command line, the target aside: the policy with its options, the
+// passes, the bound and the cells. The target's --ratio and --faces are taken unchecked: the caller
+// may have a RATIO among the positionals (face_target checks them).
+struct Pipeline_request {
+  cgal_policies::Simplification_options options;
+  const Policy_entry* policy = nullptr;  // options.policy's entry
+  std::optional<double> ratio, faces;
+};
+
+// Takes every option of simplify that sets the pipeline; App_error with exit_usage or
+// Option_error when one is malformed or out of range. The Python module reads its keywords so.
+Pipeline_request take_pipeline_request(Command_line& cli);
+
 struct Simplify_request {
   cgal_policies::Simplification_options options;
   const Policy_entry* policy = nullptr;  // options.policy's entry
