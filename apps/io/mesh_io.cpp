@@ -7,17 +7,13 @@
 #include "gltf_io.h"
 #include "obj_writer.h"
 #include "ply_writer.h"
-#include "polygon_crossing.h"
 #include "soup_readers.h"
+#include "soup_repair.h"
 
 #include <CGAL/IO/polygon_soup_io.h>
-#include <CGAL/Polygon_mesh_processing/compute_normal.h>
-#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair.h>
-#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/stitch_borders.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <cgal_policies/Corner_attributes.h>
@@ -92,33 +88,6 @@ void check_soup(const std::string& path, const std::vector<Point>& points,
                              std::to_string(points.size()));
 }
 
-// Repairs a soup that is not a valid polygon mesh as it stands, and says what it did.
-void repair_soup(std::vector<Point>& points, std::vector<Polygon>& polygons,
-                 std::vector<std::string>& repairs) {
-  const std::size_t points_before = points.size(), polygons_before = polygons.size();
-  PMP::repair_polygon_soup(points, polygons);
-  if (points.size() < points_before)
-    repairs.push_back("merged or dropped " + std::to_string(points_before - points.size()) +
-                      " duplicate or unused points");
-  if (polygons.size() < polygons_before)
-    repairs.push_back("dropped " + std::to_string(polygons_before - polygons.size()) +
-                      " degenerate or duplicate faces");
-  const std::size_t points_before_orient = points.size();
-  if (!PMP::orient_polygon_soup(points, polygons) || points.size() > points_before_orient)
-    repairs.push_back("oriented the faces and split " +
-                      std::to_string(points.size() - points_before_orient) +
-                      " non-manifold vertices");
-  else
-    repairs.push_back("oriented the faces consistently");
-}
-
-std::vector<Point> face_corners(Mesh::Face_index f, const Mesh& mesh) {
-  std::vector<Point> corners;
-  for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-    corners.push_back(mesh.point(v));
-  return corners;
-}
-
 std::string unused_vertices_removed(std::size_t count) {
   return "removed " + std::to_string(count) + " unused vertices";
 }
@@ -137,18 +106,18 @@ bool has_corner_attributes(const Corner_tables* corners) {
   return kinds.uvs || kinds.normals || kinds.colors || kinds.materials;
 }
 
-// Puts the attributes of `corners` on the mesh built from `polygons`, whose face i is polygon i
-// and whose vertex for point p is vertex_of_point[p].
+// Puts the attributes of `corners` on the mesh built from `polygons`, whose face i is polygon i;
+// is_corner(p, v) says whether the polygon's corner at point p is the face's corner at vertex v.
+template <typename Is_corner>
 void set_corner_attributes(Mesh& mesh, const std::vector<Polygon>& polygons,
-                           const Corner_tables& corners,
-                           const std::vector<Mesh::Vertex_index>& vertex_of_point) {
+                           const Corner_tables& corners, const Is_corner& is_corner) {
   const Attributes attributes = Attributes::add(mesh, kinds_of(corners));
   for (std::size_t f = 0; f < polygons.size(); ++f) {
     const Mesh::Face_index face(static_cast<Mesh::size_type>(f));
     if (attributes.materials) (*attributes.materials)[face] = corners.polygon_materials[f];
     for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(face), mesh)) {
       std::size_t k = 0;
-      while (vertex_of_point[polygons[f][k]] != mesh.target(h)) ++k;
+      while (!is_corner(polygons[f][k], mesh.target(h))) ++k;
       // The corner takes the table entry its polygon names, if the mesh has the map and it names
       // one.
       const auto copy = [&](const auto& map, const auto& polygon_entries, const auto& table) {
@@ -162,96 +131,29 @@ void set_corner_attributes(Mesh& mesh, const std::vector<Polygon>& polygons,
   }
 }
 
-// Gives the triangles of a polygon the attributes of the polygon's corners at the same vertices,
-// and the polygon's material. CGAL copies the visitor: the copies share one record.
-class Corner_attribute_copier : public PMP::Triangulate_faces::Default_visitor<Mesh> {
- public:
-  Corner_attribute_copier(Mesh& mesh, const Attributes& attributes)
-      : m_record(std::make_shared<Record>(Record{&mesh, attributes, {}, {}, {}})) {}
-
-  void before_subface_creations(Mesh::Face_index polygon) {
-    Record& r = *m_record;
-    r.vertices.clear();
-    r.values.clear();
-    r.material = r.attributes.materials ? (*r.attributes.materials)[polygon] : 0;
-    for (const auto h : CGAL::halfedges_around_face(r.mesh->halfedge(polygon), *r.mesh)) {
-      r.vertices.push_back(r.mesh->target(h));
-      r.values.push_back(r.attributes.values(h));
-    }
-  }
-
-  void after_subface_created(Mesh::Face_index triangle) {
-    Record& r = *m_record;
-    if (r.attributes.materials) (*r.attributes.materials)[triangle] = r.material;
-    for (const auto h : CGAL::halfedges_around_face(r.mesh->halfedge(triangle), *r.mesh)) {
-      const std::size_t k = std::size_t(
-          std::find(r.vertices.begin(), r.vertices.end(), r.mesh->target(h)) - r.vertices.begin());
-      r.attributes.set_values(h, r.values[k]);
-    }
-  }
-
- private:
-  struct Record {
-    Mesh* mesh;
-    Attributes attributes;
-    std::vector<Mesh::Vertex_index> vertices;
-    std::vector<Attributes::Values> values;
-    std::uint32_t material;
-  };
-  std::shared_ptr<Record> m_record;
-};
-
-// The general path, for soups that are not a clean triangle mesh as they stand: CGAL's soup
-// repair when the soup is not a polygon mesh, then stitching and triangulation.
+// The general path, for triangle soups that are not a clean mesh as they stand: the soup repaired
+// (soup_repair.h), built, its border edges stitched.
 Mesh repaired_triangle_mesh(const std::string& path, std::vector<Point>& points,
-                            std::vector<Polygon>& polygons, const Corner_tables* corners,
+                            std::vector<Polygon>& polygons, Corner_tables* corners,
                             std::vector<std::string>& repairs) {
-  if (!PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
-    repair_soup(points, polygons, repairs);
-    if (has_corner_attributes(corners))
-      repairs.push_back(
-          "dropped the texture coordinates, normals and materials (the repair does "
-          "not carry them)");
-    corners = nullptr;
-  }
+  repair_triangle_soup(points, polygons, corners, repairs);
   if (polygons.empty()) fail_input(path, "no faces left after dropping degenerate ones");
-
   Mesh mesh;
   PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-  if (has_corner_attributes(corners)) {
-    std::vector<Mesh::Vertex_index> vertex_of_point;
-    for (std::size_t p = 0; p < points.size(); ++p)
-      vertex_of_point.emplace_back(static_cast<Mesh::size_type>(p));
-    set_corner_attributes(mesh, polygons, *corners, vertex_of_point);
-  }
   // Orienting cuts the soup wherever it is not manifold, more than it must; stitching puts back
   // together the border edges that can be joined without breaking manifoldness.
-  if (!repairs.empty()) {
-    if (const std::size_t stitched = PMP::stitch_borders(mesh))
-      repairs.push_back("stitched " + std::to_string(stitched) +
-                        " border edge pairs back together");
-  }
+  if (const std::size_t stitched = PMP::stitch_borders(mesh))
+    repairs.push_back("stitched " + std::to_string(stitched) + " border edge pairs back together");
   const std::size_t isolated = PMP::remove_isolated_vertices(mesh);
   if (isolated > 0) repairs.push_back(unused_vertices_removed(isolated));
-  if (!CGAL::is_triangle_mesh(mesh)) {
-    std::size_t polygons_split = 0;
-    for (auto f : faces(mesh)) {
-      if (CGAL::degree(f, mesh) == 3) continue;
-      ++polygons_split;
-      const std::string polygon = "polygon " + std::to_string(std::size_t(f));
-      const Kernel::Vector_3 normal = PMP::compute_face_normal(f, mesh);
-      if (normal == CGAL::NULL_VECTOR) fail_input(path, polygon + " has no area");
-      if (polygon_crosses_itself(face_corners(f, mesh), normal))
-        fail_input(path, polygon + " crosses itself");
-    }
-    const Attributes attributes(mesh);
-    if (!PMP::triangulate_faces(
-            mesh, CGAL::parameters::visitor(Corner_attribute_copier(mesh, attributes))))
-      fail_input(path, "a polygon could not be triangulated");
-    repairs.push_back("triangulated " + std::to_string(polygons_split) + " polygons");
-  }
   mesh.collect_garbage();
   if (!CGAL::is_valid_polygon_mesh(mesh)) fail_input(path, "not a valid polygon mesh");
+  // Stitching keeps the faces but not their halfedges, nor which vertex is which: a corner is
+  // found by its point, which differs between a repaired triangle's corners.
+  if (corners)
+    set_corner_attributes(mesh, polygons, *corners, [&](std::size_t p, Mesh::Vertex_index v) {
+      return points[p] == mesh.point(v);
+    });
   return mesh;
 }
 
@@ -331,18 +233,21 @@ Mesh read_triangle_mesh(const std::string& path, Read_report* report,
 
 Mesh triangle_mesh_from_soup(const std::string& path, std::vector<Point>& points,
                              std::vector<Polygon>& polygons, Read_report* report,
-                             const Corner_tables* corners) {
+                             Corner_tables* corners) {
   check_soup(path, points, polygons);
+  if (!has_corner_attributes(corners)) corners = nullptr;
   Mesh mesh;
   std::size_t unused_points = 0;
   std::vector<std::string> repairs;
+  triangulate_polygons(points, polygons, corners, repairs);
   std::vector<Mesh::Vertex_index> vertex_of_point;
-  if (build_mesh_from_clean_triangles(
-          points, polygons, mesh, unused_points,
-          has_corner_attributes(corners) ? &vertex_of_point : nullptr)) {
+  if (build_mesh_from_clean_triangles(points, polygons, mesh, unused_points,
+                                      corners ? &vertex_of_point : nullptr)) {
     if (unused_points > 0) repairs.push_back(unused_vertices_removed(unused_points));
-    if (has_corner_attributes(corners))
-      set_corner_attributes(mesh, polygons, *corners, vertex_of_point);
+    if (corners)
+      set_corner_attributes(mesh, polygons, *corners, [&](std::size_t p, Mesh::Vertex_index v) {
+        return vertex_of_point[p] == v;
+      });
   } else {
     mesh = repaired_triangle_mesh(path, points, polygons, corners, repairs);
   }

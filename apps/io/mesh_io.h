@@ -1,5 +1,6 @@
-// Reading and writing meshes for every app: OBJ, OFF, PLY, STL and glTF, polygon soups repaired,
-// polygons triangulated, and atomic writes that never leave a partial file or touch the input.
+// Reading and writing meshes for every app: OBJ, OFF, PLY, STL and glTF, polygon soups repaired and
+// polygons triangulated with their corner attributes, and atomic writes that never leave a partial
+// file or touch the input.
 #ifndef CGAL_POLICIES_IO_MESH_IO_H
 #define CGAL_POLICIES_IO_MESH_IO_H
 
@@ -52,14 +53,14 @@ bool writes_corner_attributes(const std::string& path);
 Mesh read_triangle_mesh(const std::string& path, Read_report* report = nullptr,
                         Corner_attribute_reading attributes = Corner_attribute_reading::drop);
 
-// The reader's second half: checks the soup (faces, finite points, indices in range); builds the
-// mesh directly when the soup is a clean triangle mesh, otherwise repairs it when it is not a
-// polygon mesh as it stands, and triangulates. Errors name `source`, as above. The corner
-// attributes of `corners`, when given, go onto the mesh (the triangles of a polygon get the
-// polygon's); a soup that needs repair loses them, and the report says so.
+// The reader's second half: checks the soup (faces, finite points, indices in range), splits its
+// polygons into triangles (soup_repair.h: none is refused for its shape), builds the mesh directly
+// when the triangles are a clean mesh, and otherwise repairs them first. Errors name `source`, as
+// above. The corner attributes of `corners`, when given, go onto the mesh, through the
+// triangulation and the repairs (which is why the soup and its tables change in place).
 Mesh triangle_mesh_from_soup(const std::string& source, std::vector<Point>& points,
                              std::vector<std::vector<std::size_t>>& polygons,
-                             Read_report* report = nullptr, const Corner_tables* corners = nullptr);
+                             Read_report* report = nullptr, Corner_tables* corners = nullptr);
 
 // Writes by extension with full precision, all or nothing (write_atomically); throws
 // Io_error (unwritable output) and leaves no file behind when that fails. An OBJ file gets the

@@ -297,9 +297,11 @@ Polygon_soup parse_obj(const std::string& source, std::string_view bytes) {
       if (polygon.size() < 3) fail(source, where() + "a face needs at least three corners");
       add_polygon_entries(std::move(uvs), kNoEntry, soup, corners.polygon_uvs);
       add_polygon_entries(std::move(normals), kNoEntry, soup, corners.polygon_normals);
-      if (material != Corner_tables::kNoMaterial || !corners.polygon_materials.empty())
+      // The list starts at the first face that has a material, which may be the file's first.
+      if (material != Corner_tables::kNoMaterial || !corners.polygon_materials.empty()) {
         corners.polygon_materials.resize(soup.polygons.size(), Corner_tables::kNoMaterial);
-      if (!corners.polygon_materials.empty()) corners.polygon_materials.push_back(material);
+        corners.polygon_materials.push_back(material);
+      }
       soup.polygons.push_back(std::move(polygon));
     } else if (keyword == "mtllib") {
       for (std::string_view name = tokens.next(); !name.empty(); name = tokens.next())

@@ -73,6 +73,14 @@ std::string read_text(const fs::path& path) {
   return text.str();
 }
 
+// A number field of an app's JSON object; NaN when missing.
+double json_number(const std::string& json, const std::string& field) {
+  std::smatch match;
+  if (!std::regex_search(json, match, std::regex("\"" + field + "\": ([-+.e0-9]+)")))
+    return std::nan("");
+  return std::stod(match[1]);
+}
+
 class Cli : public testing::Test {
  protected:
   void SetUp() override {
@@ -111,6 +119,18 @@ class Cli : public testing::Test {
     for (const auto& entry : fs::directory_iterator(m_dir))
       EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos)
           << "temporary file left behind: " << entry.path();
+  }
+
+  // mesh_error --attributes on IN and OUT: no seam torn (as many seam loops) and no texture
+  // triangle turned over.
+  void expect_texture_kept(const fs::path& in, const fs::path& out, int samples) const {
+    const Command_result compared =
+        run("mesh_error", in.string() + " " + out.string() + " --attributes --json --samples " +
+                              std::to_string(samples));
+    ASSERT_EQ(compared.exit_code, 0) << compared.err;
+    EXPECT_EQ(json_number(compared.out, "flipped_uv_faces"), 0) << compared.out;
+    EXPECT_EQ(json_number(compared.out, "seam_loops_b"), json_number(compared.out, "seam_loops_a"))
+        << compared.out;
   }
 
   fs::path m_dir;
@@ -268,14 +288,6 @@ TEST_F(Cli, MeshErrorBetweenAFileAndItselfIsZero) {
   EXPECT_LE(std::stod(hausdorff[1]), 1e-12);
   EXPECT_NE(r.out.find("\"valid\": true"), std::string::npos) << r.out;
   EXPECT_EQ(run("mesh_error", in.string() + " " + file("missing.off").string()).exit_code, 3);
-}
-
-// A number field of an app's JSON object; NaN when missing.
-double json_number(const std::string& json, const std::string& field) {
-  std::smatch match;
-  if (!std::regex_search(json, match, std::regex("\"" + field + "\": ([-+.e0-9]+)")))
-    return std::nan("");
-  return std::stod(match[1]);
 }
 
 TEST_F(Cli, MeshErrorComparesCornerAttributesWhenAsked) {
@@ -835,6 +847,77 @@ TEST_F(Cli, SimplifyWritesATexturedObjAsGlb) {
       run("mesh_error", spot + " " + out.string() + " --attributes --json --samples 2000");
   ASSERT_EQ(compared.exit_code, 0) << compared.err;
   EXPECT_EQ(json_number(compared.out, "seam_loops_b"), 1) << compared.out;
+}
+
+// The faces of the mesh in `path`, after checking that every corner has a texture coordinate.
+std::size_t uv_at_every_corner(const fs::path& path) {
+  const Mesh mesh =
+      apps::read_triangle_mesh(path.string(), nullptr, apps::Corner_attribute_reading::keep);
+  const Attributes a(mesh);
+  EXPECT_TRUE(a.uvs.has_value()) << path;
+  std::size_t without = 0;
+  for (const auto h : mesh.halfedges())
+    without += a.uvs && !mesh.is_border(h) && !std::isfinite((*a.uvs)[h][0]);
+  EXPECT_EQ(without, 0u) << path;
+  return mesh.number_of_faces();
+}
+
+// A strip of four flat quads with a twisted quad at each end, each of which crosses itself seen
+// along its normal (the reader refused them with exit 3 before it triangulated every polygon):
+// all six are split, and their texture coordinates go through the run.
+TEST_F(Cli, SimplifyTakesTwistedQuadsWithTheirTextureCoordinates) {
+  std::ostringstream obj;
+  const auto corner = [&obj](double x, double y, double z) {
+    obj << "v " << x << ' ' << y << ' ' << z << "\nvt " << (x + 5) / 6 << ' ' << (y + 1) / 2
+        << '\n';
+  };
+  const auto quad = [&obj](int first) {
+    obj << "f";
+    for (int k = first; k < first + 4; ++k) obj << ' ' << k << '/' << k;
+    obj << '\n';
+  };
+  for (int x = -4; x < 0; ++x) {
+    corner(x, -1, 0), corner(x + 1, -1, 0), corner(x + 1, 1, 0), corner(x, 1, 0);
+    quad(4 * (x + 4) + 1);
+  }
+  // io_test's twisted quad, and the same turned half a turn about the strip's middle.
+  corner(0, -1, 0), corner(1, 0, -0.5), corner(1, -1, -1), corner(0, 1, 0);
+  quad(17);
+  corner(-4, 1, 0), corner(-5, 0, -0.5), corner(-5, 1, -1), corner(-4, -1, 0);
+  quad(21);
+  const fs::path in = write("twisted.obj", obj.str()), out = file("out.obj");
+  const Command_result r =
+      run("simplify", in.string() + " " + out.string() + " --faces 8 --policy gh --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"triangulated 6 polygons\""), std::string::npos) << r.out;
+  EXPECT_EQ(json_number(r.out, "input_faces"), 12) << r.out;
+  EXPECT_NE(r.out.find("\"attributes\": \"carried\""), std::string::npos) << r.out;
+  EXPECT_LE(uv_at_every_corner(out), 8u);
+  expect_texture_kept(in, out, 2000);
+}
+
+// Spot with what files from other tools carry: two degenerate faces, and a textured triangle
+// that touches it at one point. The repair keeps every texture coordinate, and the simplified
+// mesh tears no seam and turns no texture triangle over.
+TEST_F(Cli, ARepairedTexturedMeshKeepsItsSeamsThroughSimplification) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const std::string spot = read_text(test_meshes::data_file("spot.obj"));
+  // Spot's first point is where the extra triangle touches.
+  const fs::path in = write("dirty.obj", spot +
+                                             "f 1/1 1/1 2/2\nf 2/2 3/3 3/3\n"
+                                             "v 2 2 2\nv 2 3 2\nvt 0.1 0.1\nvt 0.2 0.1\n"
+                                             "vt 0.1 0.2\nf 1/-3 -2/-2 -1/-1\n");
+  const fs::path out = file("out.obj");
+  const Command_result r = run("simplify", in.string() + " " + out.string() + " 0.1 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"dropped 2 degenerate or duplicate faces\""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"oriented the faces and split 1 non-manifold vertices\""),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.out.find("dropped the texture coordinates"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"attributes\": \"carried\""), std::string::npos) << r.out;
+  EXPECT_EQ(uv_at_every_corner(in), 5856u + 1);
+  expect_texture_kept(in, out, 20000);
 }
 
 TEST_F(Cli, SimplifyCarriesPlyColoursIntoAGltf) {

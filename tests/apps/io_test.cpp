@@ -14,6 +14,7 @@
 #include "io/mesh_io.h"
 #include "io/obj_writer.h"
 #include "io/polygon_crossing.h"
+#include "io/polygon_triangulation.h"
 #include "io/soup_readers.h"
 
 #include <CGAL/IO/polygon_soup_io.h>
@@ -316,7 +317,7 @@ TEST(CleanSoups, ShippedMeshesAreBuiltAsCgalBuildsThem) {
 }  // namespace clean_soups
 
 // ---------------------------------------------------------------------------------------------
-// Polygons that cross themselves are refused before CGAL's triangulation sees them.
+// Polygons that cross themselves are kept from CGAL's triangulation, and triangulated all the same.
 namespace polygon_crossing {
 
 using apps::Point;
@@ -371,11 +372,34 @@ std::string refusal(const std::vector<std::array<double, 2>>& xy) {
   return "";
 }
 
-TEST(PolygonCrossing, TheReaderRefusesACrossingPolygonAndTriangulatesASimpleOne) {
+// A polygon that crosses itself, or has no area, is triangulated all the same, by its boundary in
+// 3D (a pentagram, whose triangulate_face could loop), or as a fan (five points on a line).
+TEST(PolygonCrossing, TheReaderTriangulatesEveryPolygonWhateverItsShape) {
   EXPECT_EQ(refusal({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}), "");
-  EXPECT_EQ(refusal({{0, 2}, {2, -1}, {-1, 1}, {1, 1}, {-2, -1}}),
-            "soup: polygon 0 crosses itself");
-  EXPECT_EQ(refusal({{0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}}), "soup: polygon 0 has no area");
+  EXPECT_EQ(refusal({{0, 2}, {2, -1}, {-1, 1}, {1, 1}, {-2, -1}}), "");
+  EXPECT_EQ(refusal({{0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}}), "");
+}
+
+// The quad's split: the diagonal whose triangles do not fold onto each other, else the one whose
+// smallest angle is larger.
+TEST(PolygonCrossing, AQuadIsSplitAlongItsBetterDiagonal) {
+  using Triangles = std::vector<std::array<std::size_t, 3>>;
+  // Folded over its diagonal 1-3: the triangles 1 2 3 and 1 3 0 would face away from each other.
+  const std::vector<Point> folded = {{0, 0, 0}, {1, 0, 0}, {0.25, 0.25, 0.5}, {0, 1, 0}};
+  EXPECT_EQ(apps::polygon_triangles(folded), (Triangles{{0, 1, 2}, {0, 2, 3}}));
+  // A ribbon's section twisted by more than a right angle, which crosses itself seen along its
+  // normal: either split folds it, and the diagonal 0-2 keeps its smallest angle at 35.3 degrees
+  // where 1-3 would make one of 17.7.
+  const std::vector<Point> twisted = {{0, -1, 0}, {1, 0, -0.5}, {1, -1, -1}, {0, 1, 0}};
+  EXPECT_EQ(apps::polygon_triangles(twisted), (Triangles{{0, 1, 2}, {0, 2, 3}}));
+  // Flat and convex: the short diagonal, which leaves the sharp corners 0 and 2 whole.
+  const std::vector<Point> kite = {{0, 0, 0}, {10, -1, 0}, {20, 0, 0}, {10, 1, 0}};
+  EXPECT_EQ(apps::polygon_triangles(kite), (Triangles{{1, 2, 3}, {1, 3, 0}}));
+  // A flat concave dart: only the diagonal through its inner corner 3 keeps both triangles up.
+  const std::vector<Point> dart = {{2, 4, 0}, {0, 0, 0}, {4, 0, 0}, {2, 1, 0}};
+  EXPECT_EQ(apps::polygon_triangles(dart), (Triangles{{1, 2, 3}, {1, 3, 0}}));
+  EXPECT_EQ(apps::polygon_triangles(in_plane({{0, 0}, {2, 0}, {2, 2}, {0, 2}})),
+            (Triangles{{0, 1, 2}, {0, 2, 3}}));  // a square: a tie, the diagonal from corner 0
 }
 
 }  // namespace polygon_crossing
@@ -628,19 +652,126 @@ TEST(CornerAttributes, APolygonsTrianglesKeepItsCornersAndMaterial) {
   fs::remove_all(folder);
 }
 
-TEST(CornerAttributes, ASoupThatNeedsRepairLosesThemAndSaysSo) {
-  const fs::path folder = scratch_folder("repair");
-  // Two triangles facing apart across their edge: the repair flips one.
-  std::ofstream(folder / "in.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\n"
-                                      "f 1/1 2/1 3/1\nf 2/1 3/1 4/1\n";
+// The texture coordinate of each corner of `mesh`, by the corner's face (its three points, from
+// the lowest) and point.
+std::map<std::pair<std::array<double, 9>, std::array<double, 3>>, Attributes::Uv> uvs_by_corner(
+    const Mesh& mesh) {
+  const Attributes a(mesh);
+  std::map<std::pair<std::array<double, 9>, std::array<double, 3>>, Attributes::Uv> uvs;
+  for (const Face_corners& face : face_corners(mesh)) {
+    std::array<double, 9> points{};
+    for (std::size_t k = 0; k < 3; ++k)
+      std::copy_n(face.corners[k].begin(), 3, points.begin() + std::ptrdiff_t(3 * k));
+    for (const auto& c : face.corners) uvs[{points, {c[0], c[1], c[2]}}] = {c[3], c[4]};
+  }
+  return uvs;
+}
+
+// A twisted quad, which crosses itself seen along its normal, beside a pentagram: both are
+// triangulated, and every triangle keeps its polygon's corners and material.
+TEST(CornerAttributes, TwistedAndCrossingPolygonsKeepTheirCorners) {
+  const fs::path folder = scratch_folder("twisted");
+  std::ofstream(folder / "in.obj") << "v 0 -1 0\nv 1 0 -0.5\nv 1 -1 -1\nv 0 1 0\n"
+                                      "v 10 2 0\nv 12 -1 0\nv 9 1 0\nv 11 1 0\nv 8 -1 0\n"
+                                      "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 0.5 0.5\nusemtl cloth\n"
+                                      "f 1/1 2/2 3/3 4/4\nusemtl star\nf 5/1 6/2 7/3 8/4 9/5\n";
+  {
+    // The quad is one that the reader refused before it triangulated every polygon.
+    const std::vector<apps::Point> corners = {{0, -1, 0}, {1, 0, -0.5}, {1, -1, -1}, {0, 1, 0}};
+    Mesh quad;
+    std::vector<Mesh::Vertex_index> v;
+    for (const apps::Point& p : corners) v.push_back(quad.add_vertex(p));
+    ASSERT_TRUE(apps::polygon_crosses_itself(
+        corners, CGAL::Polygon_mesh_processing::compute_face_normal(quad.add_face(v), quad)));
+  }
   apps::Read_report report;
   const Mesh mesh = apps::read_triangle_mesh((folder / "in.obj").string(), &report,
                                              apps::Corner_attribute_reading::keep);
-  EXPECT_FALSE(Attributes(mesh).any());
-  EXPECT_NE(std::find(report.repairs.begin(), report.repairs.end(),
-                      "dropped the texture coordinates, normals and materials (the repair does "
-                      "not carry them)"),
-            report.repairs.end());
+  EXPECT_EQ(report.repairs, std::vector<std::string>{"triangulated 2 polygons"});
+  ASSERT_EQ(mesh.number_of_faces(), 2u + 3u);
+  const Attributes a(mesh);
+  ASSERT_TRUE(a.uvs && a.materials);
+  // The quad along its diagonal 0-2 (PolygonCrossing.AQuadIsSplitAlongItsBetterDiagonal), each
+  // corner with its coordinates.
+  const std::array<double, 3> p0{0, -1, 0}, p1{1, 0, -0.5}, p2{1, -1, -1}, p3{0, 1, 0};
+  const auto face = [](const std::array<double, 3>& u, const std::array<double, 3>& v,
+                       const std::array<double, 3>& w) {
+    return std::array<double, 9>{u[0], u[1], u[2], v[0], v[1], v[2], w[0], w[1], w[2]};
+  };
+  const auto uvs = uvs_by_corner(mesh);
+  EXPECT_EQ(uvs.at({face(p0, p1, p2), p0}), (Attributes::Uv{0, 0}));
+  EXPECT_EQ(uvs.at({face(p0, p1, p2), p1}), (Attributes::Uv{1, 0}));
+  EXPECT_EQ(uvs.at({face(p0, p1, p2), p2}), (Attributes::Uv{1, 1}));
+  EXPECT_EQ(uvs.at({face(p0, p2, p3), p0}), (Attributes::Uv{0, 0}));
+  EXPECT_EQ(uvs.at({face(p0, p2, p3), p2}), (Attributes::Uv{1, 1}));
+  EXPECT_EQ(uvs.at({face(p0, p2, p3), p3}), (Attributes::Uv{0, 1}));
+  // The pentagram: its five corners keep their coordinates in each of the triangles they are in.
+  const std::map<double, Attributes::Uv> star_uv = {
+      {10, {0, 0}}, {12, {1, 0}}, {9, {1, 1}}, {11, {0, 1}}, {8, {0.5, 0.5}}};
+  std::size_t star_corners = 0;
+  for (const auto f : mesh.faces())
+    for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      const double x = mesh.point(mesh.target(h)).x();
+      EXPECT_EQ((*a.materials)[f], x < 5 ? 0u : 1u);
+      if (x < 5) continue;
+      ++star_corners;
+      EXPECT_EQ((*a.uvs)[h], star_uv.at(x));
+    }
+  EXPECT_EQ(star_corners, 9u);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  fs::remove_all(folder);
+}
+
+// Every repair keeps every corner's values and every face's material: two triangles facing apart
+// across their edge (one is turned), a point written twice, a degenerate and a duplicate face,
+// and a third triangle that touches the others at one point only (that point is split).
+TEST(CornerAttributes, ARepairKeepsEveryCornersValuesAndSaysWhatItDid) {
+  const fs::path folder = scratch_folder("repair");
+  std::ofstream(folder / "in.obj")
+      << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 1 0 0\nv 2 2 1\nv 1 2 1\n"
+         "vt 0 0\nvt 0.5 0\nvt 0 0.5\nvt 0.5 0.5\nvt 0.9 0.9\nvt 0.8 0.9\nvt 0.6 0.6\n"
+         "vn 0 0 1\nusemtl a\nf 1/1/1 2/2/1 3/3/1\nusemtl b\nf 5/2/1 3/3/1 4/4/1\n"
+         "f 1/1 1/1 2/2\nf 2/2 3/3 1/1\nusemtl c\nf 4/7 6/5 7/6\n";
+  apps::Read_report report;
+  const Mesh mesh = apps::read_triangle_mesh((folder / "in.obj").string(), &report,
+                                             apps::Corner_attribute_reading::keep);
+  EXPECT_EQ(report.repairs,
+            (std::vector<std::string>{"merged or dropped 1 duplicate or unused points",
+                                      "dropped 2 degenerate or duplicate faces",
+                                      "oriented the faces and split 1 non-manifold vertices"}));
+  ASSERT_EQ(mesh.number_of_faces(), 3u);
+  EXPECT_EQ(mesh.number_of_vertices(), 7u);  // point 4 twice: the third triangle touches there
+  const Attributes a(mesh);
+  ASSERT_TRUE(a.uvs && a.normals && a.materials);
+  // The first two faces give their common points the same coordinates.
+  const std::map<std::array<double, 2>, Attributes::Uv> first_two = {
+      {{0, 0}, {0, 0}}, {{1, 0}, {0.5, 0}}, {{0, 1}, {0, 0.5}}};
+  for (const auto f : mesh.faces()) {
+    const std::uint32_t material = (*a.materials)[f];
+    for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      const apps::Point& p = mesh.point(mesh.target(h));
+      const Attributes::Uv uv = (*a.uvs)[h];
+      if (material == 2) {  // the third triangle, as it was
+        EXPECT_EQ(uv, (p == apps::Point(1, 1, 0)   ? Attributes::Uv{0.6, 0.6}
+                       : p == apps::Point(2, 2, 1) ? Attributes::Uv{0.9, 0.9}
+                                                   : Attributes::Uv{0.8, 0.9}));
+        EXPECT_TRUE(std::isnan((*a.normals)[h].x()));
+        continue;
+      }
+      EXPECT_EQ((*a.normals)[h], apps::Kernel::Vector_3(0, 0, 1));
+      const Attributes::Uv expected = material == 1 && p == apps::Point(1, 1, 0)
+                                          ? Attributes::Uv{0.5, 0.5}
+                                          : first_two.at({p.x(), p.y()});
+      EXPECT_EQ(uv, expected) << p;
+    }
+  }
+  std::vector<std::uint32_t> materials;
+  for (const auto f : mesh.faces()) materials.push_back((*a.materials)[f]);
+  EXPECT_EQ(materials, (std::vector<std::uint32_t>{0, 1, 2}));
+  // One of the first two faces was turned to face the other's way.
+  const auto n0 = CGAL::Polygon_mesh_processing::compute_face_normal(Mesh::Face_index(0), mesh);
+  const auto n1 = CGAL::Polygon_mesh_processing::compute_face_normal(Mesh::Face_index(1), mesh);
+  EXPECT_GT(n0 * n1, 0);
   fs::remove_all(folder);
 }
 
