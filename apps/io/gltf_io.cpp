@@ -2,6 +2,7 @@
 
 #include "Io_error.h"
 #include "Wedge_mesh.h"
+#include "gltf_meshopt.h"
 
 #include <tiny_gltf.h>
 
@@ -12,6 +13,8 @@
 #include <cstring>
 #include <exception>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -44,7 +47,15 @@ bool keep_image_bytes(tinygltf::Image* image, int, std::string*, std::string*, i
   return true;
 }
 
+// glTF's texture coordinates start at the image's top left corner, v downward; the mesh's, as
+// OBJ's and PLY's, at its bottom left, v upward. The change is its own inverse.
+std::array<double, 2> texture_coordinates_of_gltf(double u, double v) { return {u, 1 - v}; }
+
 // ---- Reading ---------------------------------------------------------------------------------
+
+// The extensions the reader decodes into plain geometry and texture coordinates.
+const std::array<std::string, 3> kDecodedExtensions = {
+    "KHR_mesh_quantization", "EXT_meshopt_compression", "KHR_texture_transform"};
 
 using Matrix = std::array<double, 16>;  // column-major, as glTF stores it
 constexpr Matrix kIdentity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
@@ -148,50 +159,107 @@ double component(const unsigned char* at, int component_type, bool normalized) {
   }
 }
 
-// The values of accessor `index`, `components` per element, after checking that it is of one of
-// the allowed component types, normalized when of integers unless it holds indices (as the spec
-// has it), and that the file holds every element it declares.
-std::vector<double> accessor_values(const std::string& path, const tinygltf::Model& model,
-                                    int index, int type, const std::vector<int>& allowed,
-                                    const std::string& what, bool holds_indices = false) {
-  if (index < 0 || std::size_t(index) >= model.accessors.size())
-    fail(path, what + ": accessor " + std::to_string(index) + " does not exist");
-  const tinygltf::Accessor& accessor = model.accessors[std::size_t(index)];
-  const std::string name = what + " (accessor " + std::to_string(index) + ")";
-  if (accessor.type != type ||
-      std::find(allowed.begin(), allowed.end(), accessor.componentType) == allowed.end())
-    fail(path, name + ": unsupported element or component type");
-  if (accessor.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT &&
-      accessor.normalized == holds_indices)
-    fail(path, name + (holds_indices ? ": indices cannot be normalized"
-                                     : ": integer values must be normalized"));
-  if (accessor.sparse.isSparse) fail(path, name + ": sparse accessors are not supported");
-  if (accessor.bufferView < 0 || std::size_t(accessor.bufferView) >= model.bufferViews.size())
+// What an accessor of an attribute may hold: its element type, its component types, and whether
+// integers must be normalized (`normalized`), must not be (indices), or may be either
+// (KHR_mesh_quantization's positions and texture coordinates).
+struct Accessor_rule {
+  enum class Integers { normalized, not_normalized, either };
+  int type;
+  std::vector<int> component_types;
+  Integers integers;
+};
+
+// The bytes [offset, offset + size) of bufferView `index`, after checking that they are there.
+const unsigned char* view_bytes(const std::string& path, const tinygltf::Model& model, int index,
+                                std::size_t offset, std::size_t size, const std::string& name) {
+  if (index < 0 || std::size_t(index) >= model.bufferViews.size())
     fail(path, name + ": no bufferView");
-  const tinygltf::BufferView& view = model.bufferViews[std::size_t(accessor.bufferView)];
+  const tinygltf::BufferView& view = model.bufferViews[std::size_t(index)];
   if (view.buffer < 0 || std::size_t(view.buffer) >= model.buffers.size() ||
       view.byteOffset > model.buffers[std::size_t(view.buffer)].data.size() ||
       view.byteLength > model.buffers[std::size_t(view.buffer)].data.size() - view.byteOffset)
     fail(path, name + ": its bufferView reaches past its buffer");
-  const std::size_t components = std::size_t(tinygltf::GetNumComponentsInType(std::uint32_t(type)));
+  if (offset > view.byteLength || size > view.byteLength - offset)
+    fail(path, name + ": reaches past its bufferView");
+  return model.buffers[std::size_t(view.buffer)].data.data() + view.byteOffset + offset;
+}
+
+// The values of accessor `index`, `components` per element, after checking it against `rule` and
+// that the file holds every element it declares; a sparse accessor's substitutions applied.
+std::vector<double> accessor_values(const std::string& path, const tinygltf::Model& model,
+                                    int index, const Accessor_rule& rule, const std::string& what) {
+  if (index < 0 || std::size_t(index) >= model.accessors.size())
+    fail(path, what + ": accessor " + std::to_string(index) + " does not exist");
+  const tinygltf::Accessor& accessor = model.accessors[std::size_t(index)];
+  const std::string name = what + " (accessor " + std::to_string(index) + ")";
+  const std::vector<int>& allowed = rule.component_types;
+  if (accessor.type != rule.type ||
+      std::find(allowed.begin(), allowed.end(), accessor.componentType) == allowed.end())
+    fail(path, name + ": unsupported element or component type");
+  if (accessor.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) {
+    if (rule.integers == Accessor_rule::Integers::normalized && !accessor.normalized)
+      fail(path, name + ": integer values must be normalized");
+    if (rule.integers == Accessor_rule::Integers::not_normalized && accessor.normalized)
+      fail(path, name + ": indices cannot be normalized");
+  }
+  const std::size_t components =
+      std::size_t(tinygltf::GetNumComponentsInType(std::uint32_t(rule.type)));
   const std::size_t size =
       std::size_t(tinygltf::GetComponentSizeInBytes(std::uint32_t(accessor.componentType)));
   const std::size_t element = size * components;
-  const std::size_t stride = view.byteStride > 0 ? view.byteStride : element;
   const std::size_t count = accessor.count;
-  if (stride < element ||
-      (count > 0 &&
-       (accessor.byteOffset > view.byteLength || element > view.byteLength - accessor.byteOffset ||
-        count - 1 > (view.byteLength - accessor.byteOffset - element) / stride)))
-    fail(path, name + ": reaches past its bufferView");
-  const unsigned char* first =
-      model.buffers[std::size_t(view.buffer)].data.data() + view.byteOffset + accessor.byteOffset;
+  const auto read_elements = [&](const unsigned char* first, std::size_t stride, std::size_t n,
+                                 std::vector<double>& values) {
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t c = 0; c < components; ++c)
+        values.push_back(
+            component(first + i * stride + c * size, accessor.componentType, accessor.normalized));
+  };
   std::vector<double> values;
   values.reserve(count * components);
-  for (std::size_t i = 0; i < count; ++i)
-    for (std::size_t c = 0; c < components; ++c)
-      values.push_back(
-          component(first + i * stride + c * size, accessor.componentType, accessor.normalized));
+  if (accessor.bufferView < 0) {
+    // Only a sparse accessor may have no bufferView: its elements start at zero.
+    if (!accessor.sparse.isSparse) fail(path, name + ": no bufferView");
+    values.assign(count * components, 0.0);
+  } else if (count > 0) {
+    const std::size_t view_stride =
+        std::size_t(model.bufferViews.at(std::size_t(accessor.bufferView)).byteStride);
+    const std::size_t stride = view_stride > 0 ? view_stride : element;
+    if (stride < element ||
+        count - 1 > (std::numeric_limits<std::size_t>::max() - element) / stride)
+      fail(path, name + ": reaches past its bufferView");
+    read_elements(view_bytes(path, model, accessor.bufferView, accessor.byteOffset,
+                             (count - 1) * stride + element, name),
+                  stride, count, values);
+  }
+  if (!accessor.sparse.isSparse) return values;
+  // The sparse substitutions: `changed` indices, then as many elements, both tightly packed.
+  const auto& sparse = accessor.sparse;
+  const std::size_t changed = std::size_t(std::max(sparse.count, 0));
+  const int index_type = sparse.indices.componentType;
+  if (index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+      index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+      index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+    fail(path, name + ": unsupported sparse index type");
+  if (changed == 0 || changed > count) fail(path, name + ": sparse count out of range");
+  const std::size_t index_size =
+      std::size_t(tinygltf::GetComponentSizeInBytes(std::uint32_t(index_type)));
+  const unsigned char* indices = view_bytes(path, model, sparse.indices.bufferView,
+                                            std::size_t(std::max(sparse.indices.byteOffset, 0)),
+                                            changed * index_size, name + " sparse indices");
+  std::vector<double> substitutes;
+  substitutes.reserve(changed * components);
+  read_elements(view_bytes(path, model, sparse.values.bufferView,
+                           std::size_t(std::max(sparse.values.byteOffset, 0)), changed * element,
+                           name + " sparse values"),
+                element, changed, substitutes);
+  for (std::size_t i = 0; i < changed; ++i) {
+    const double at = component(indices + i * index_size, index_type, false);
+    if (at >= double(count))
+      fail(path, name + ": sparse index " + std::to_string(std::size_t(at)) + " is out of range");
+    std::copy_n(substitutes.begin() + std::ptrdiff_t(i * components), components,
+                values.begin() + std::ptrdiff_t(std::size_t(at) * components));
+  }
   return values;
 }
 
@@ -230,17 +298,69 @@ Matrix normal_matrix(const Matrix& m) {
   return n;
 }
 
-// The component types glTF allows for texture coordinates and colours.
-const std::vector<int> kFloatOrNormalized = {TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                             TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                                             TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
+constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT, kByte = TINYGLTF_COMPONENT_TYPE_BYTE,
+              kUnsignedByte = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+              kShort = TINYGLTF_COMPONENT_TYPE_SHORT,
+              kUnsignedShort = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+using Integers = Accessor_rule::Integers;
+
+// What glTF allows for each attribute, and what KHR_mesh_quantization adds when the file uses it.
+struct Attribute_rules {
+  Accessor_rule position, normal, uv, indices;
+  explicit Attribute_rules(bool quantized)
+      : position{TINYGLTF_TYPE_VEC3,
+                 quantized ? std::vector<int>{kFloat, kByte, kUnsignedByte, kShort, kUnsignedShort}
+                           : std::vector<int>{kFloat},
+                 Integers::either},
+        normal{TINYGLTF_TYPE_VEC3,
+               quantized ? std::vector<int>{kFloat, kByte, kShort} : std::vector<int>{kFloat},
+               Integers::normalized},
+        uv{TINYGLTF_TYPE_VEC2,
+           quantized ? std::vector<int>{kFloat, kByte, kUnsignedByte, kShort, kUnsignedShort}
+                     : std::vector<int>{kFloat, kUnsignedByte, kUnsignedShort},
+           quantized ? Integers::either : Integers::normalized},
+        indices{TINYGLTF_TYPE_SCALAR,
+                {kUnsignedByte, kUnsignedShort, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
+                Integers::not_normalized} {}
+  static Accessor_rule color(int type) {
+    return {type, {kFloat, kUnsignedByte, kUnsignedShort}, Integers::normalized};
+  }
+};
+
+bool uses(const tinygltf::Model& model, const std::string& extension) {
+  return std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(), extension) !=
+         model.extensionsUsed.end();
+}
+
+// A texture's KHR_texture_transform as the matrix it applies to texture coordinates (in glTF's
+// convention, before the v turn), rows of three; the identity without one.
+std::array<double, 6> texture_transform(const tinygltf::ExtensionMap& extensions) {
+  std::array<double, 6> m = {1, 0, 0, 0, 1, 0};
+  const auto found = extensions.find("KHR_texture_transform");
+  if (found == extensions.end()) return m;
+  const tinygltf::Value& t = found->second;
+  const auto pair = [&t](const char* key, double a, double b) {
+    const tinygltf::Value& v = t.Get(key);
+    return v.IsArray() && v.ArrayLen() == 2
+               ? std::array<double, 2>{v.Get(0).GetNumberAsDouble(), v.Get(1).GetNumberAsDouble()}
+               : std::array<double, 2>{a, b};
+  };
+  const std::array<double, 2> offset = pair("offset", 0, 0), scale = pair("scale", 1, 1);
+  const double rotation = t.Has("rotation") ? t.Get("rotation").GetNumberAsDouble() : 0;
+  const double c = std::cos(rotation), s = std::sin(rotation);
+  // translation * rotation * scale, as the extension defines them.
+  return {c * scale[0], s * scale[1], offset[0], -s * scale[0], c * scale[1], offset[1]};
+}
 
 // Builds the soup primitive by primitive: a point for each glTF vertex a triangle uses, the
 // corner tables an entry for each glTF vertex.
 class Soup_builder {
  public:
   Soup_builder(const std::string& path, const tinygltf::Model& model)
-      : m_path(path), m_model(model) {}
+      : m_path(path),
+        m_model(model),
+        m_rules(uses(model, "KHR_mesh_quantization")),
+        m_quantized(uses(model, "KHR_mesh_quantization")) {}
 
   void add_primitive(const tinygltf::Primitive& primitive, const Matrix& world,
                      const std::string& what) {
@@ -253,8 +373,7 @@ class Soup_builder {
     const auto position = primitive.attributes.find("POSITION");
     if (position == primitive.attributes.end()) fail(m_path, what + ": no POSITION");
     std::vector<double> positions =
-        accessor_values(m_path, m_model, position->second, TINYGLTF_TYPE_VEC3,
-                        {TINYGLTF_COMPONENT_TYPE_FLOAT}, what + " POSITION");
+        accessor_values(m_path, m_model, position->second, m_rules.position, what + " POSITION");
     check_finite(m_path, positions, 3, what + ": the position");
     const std::size_t vertices = positions.size() / 3;
     const bool moved = world != kIdentity;
@@ -325,11 +444,8 @@ class Soup_builder {
     if (primitive.indices < 0) {
       for (std::size_t v = 0; v < vertices; ++v) corners.push_back(v);
     } else {
-      for (double index : accessor_values(
-               m_path, m_model, primitive.indices, TINYGLTF_TYPE_SCALAR,
-               {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
-                TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
-               what + " indices", true)) {
+      for (double index : accessor_values(m_path, m_model, primitive.indices, m_rules.indices,
+                                          what + " indices")) {
         if (index >= double(vertices))
           fail(m_path, what + ": index " + std::to_string(std::size_t(index)) +
                            " is out of range (" + std::to_string(vertices) + " vertices)");
@@ -346,12 +462,20 @@ class Soup_builder {
                 const std::string& what) {
     const auto uv = primitive.attributes.find("TEXCOORD_0");
     if (uv == primitive.attributes.end()) return false;
-    const std::vector<double> values = accessor_values(
-        m_path, m_model, uv->second, TINYGLTF_TYPE_VEC2, kFloatOrNormalized, what + " TEXCOORD_0");
+    const std::vector<double> values =
+        accessor_values(m_path, m_model, uv->second, m_rules.uv, what + " TEXCOORD_0");
     check_vertex_count(values.size() / 2, vertices, what + " TEXCOORD_0");
     check_finite(m_path, values, 2, what + ": the texture coordinate");
+    // The base colour texture's transform, baked in (the written materials leave it out).
+    const std::array<double, 6> m =
+        primitive.material >= 0 && std::size_t(primitive.material) < m_model.materials.size()
+            ? texture_transform(m_model.materials[std::size_t(primitive.material)]
+                                    .pbrMetallicRoughness.baseColorTexture.extensions)
+            : texture_transform({});
     for (std::size_t i = 0; i < values.size(); i += 2)
-      m_soup.corners.uvs.push_back({values[i], values[i + 1]});
+      m_soup.corners.uvs.push_back(
+          texture_coordinates_of_gltf(m[0] * values[i] + m[1] * values[i + 1] + m[2],
+                                      m[3] * values[i] + m[4] * values[i + 1] + m[5]));
     return true;
   }
 
@@ -360,15 +484,15 @@ class Soup_builder {
     const auto normal = primitive.attributes.find("NORMAL");
     if (normal == primitive.attributes.end()) return false;
     std::vector<double> values =
-        accessor_values(m_path, m_model, normal->second, TINYGLTF_TYPE_VEC3,
-                        {TINYGLTF_COMPONENT_TYPE_FLOAT}, what + " NORMAL");
+        accessor_values(m_path, m_model, normal->second, m_rules.normal, what + " NORMAL");
     check_vertex_count(values.size() / 3, vertices, what + " NORMAL");
     check_finite(m_path, values, 3, what + ": the normal");
     if (moved) transform(normal_matrix(world), 0, values);
     for (std::size_t i = 0; i < values.size(); i += 3) {
       Kernel::Vector_3 n(values[i], values[i + 1], values[i + 2]);
       const double length = std::sqrt(n.squared_length());
-      if (moved && length > 0) n = n / length;  // a scaled node scales its normals too
+      // A scaled node scales its normals too, and quantized ones are a little off unit length.
+      if ((moved || m_quantized) && length > 0) n = n / length;
       m_soup.corners.normals.push_back(n);
     }
     return true;
@@ -383,8 +507,8 @@ class Soup_builder {
                      m_model.accessors[std::size_t(color->second)].type == TINYGLTF_TYPE_VEC3;
     const std::size_t channels = rgb ? 3 : 4;
     const std::vector<double> values = accessor_values(
-        m_path, m_model, color->second, rgb ? TINYGLTF_TYPE_VEC3 : TINYGLTF_TYPE_VEC4,
-        kFloatOrNormalized, what + " COLOR_0");
+        m_path, m_model, color->second,
+        Attribute_rules::color(rgb ? TINYGLTF_TYPE_VEC3 : TINYGLTF_TYPE_VEC4), what + " COLOR_0");
     check_vertex_count(values.size() / channels, vertices, what + " COLOR_0");
     check_finite(m_path, values, channels, what + ": the colour");
     for (std::size_t i = 0; i < values.size(); i += channels)
@@ -401,6 +525,8 @@ class Soup_builder {
 
   const std::string& m_path;
   const tinygltf::Model& m_model;
+  const Attribute_rules m_rules;
+  const bool m_quantized;
   Polygon_soup m_soup;
   std::array<bool, 3> m_any{};  // whether any primitive has texture coordinates, normals, colours
 };
@@ -417,11 +543,23 @@ std::shared_ptr<const tinygltf::Model> kept_looks(tinygltf::Model& model, const 
     }
     image.bufferView = -1;
   }
+  // The texture transform is baked into the texture coordinates (read_uvs).
+  for (tinygltf::Material& material : model.materials)
+    for (tinygltf::ExtensionMap* extensions :
+         {&material.pbrMetallicRoughness.baseColorTexture.extensions,
+          &material.pbrMetallicRoughness.metallicRoughnessTexture.extensions,
+          &material.normalTexture.extensions, &material.occlusionTexture.extensions,
+          &material.emissiveTexture.extensions})
+      extensions->erase("KHR_texture_transform");
   looks->materials = std::move(model.materials);
   looks->textures = std::move(model.textures);
   looks->samplers = std::move(model.samplers);
   looks->images = std::move(model.images);
-  looks->extensionsUsed = std::move(model.extensionsUsed);
+  // The extensions the looks still use: not those of the geometry, nor the baked transform.
+  for (std::string& extension : model.extensionsUsed)
+    if (std::find(kDecodedExtensions.begin(), kDecodedExtensions.end(), extension) ==
+        kDecodedExtensions.end())
+      looks->extensionsUsed.push_back(std::move(extension));
   return looks;
 }
 
@@ -497,8 +635,22 @@ Gltf_soup read_gltf(const std::string& path, bool binary) {
   std::string error, warning;
   bool loaded = false;
   try {
-    loaded = binary ? loader.LoadBinaryFromFile(&model, &error, &warning, path)
-                    : loader.LoadASCIIFromFile(&model, &error, &warning, path);
+    std::ifstream file(path, std::ios::binary);
+    if (!file) fail(path, "cannot open");
+    const std::string bytes = with_loadable_fallback_buffers(
+        std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()),
+        binary);
+    if (bytes.size() > std::numeric_limits<unsigned>::max())
+      fail(path, "cannot parse: larger than tinygltf reads (4 GiB)");
+    const std::string folder = fs::absolute(path).parent_path().string();
+    loaded = binary
+                 ? loader.LoadBinaryFromMemory(&model, &error, &warning,
+                                               reinterpret_cast<const unsigned char*>(bytes.data()),
+                                               static_cast<unsigned>(bytes.size()), folder)
+                 : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(),
+                                              static_cast<unsigned>(bytes.size()), folder);
+  } catch (const Io_error&) {
+    throw;
   } catch (const std::exception& e) {
     error = e.what();
   }
@@ -507,8 +659,11 @@ Gltf_soup read_gltf(const std::string& path, bool binary) {
          "cannot parse: " + (error.empty() && warning.empty() ? std::string("not a valid glTF file")
                                                               : one_line(error + warning)));
   for (const std::string& extension : model.extensionsRequired)
-    fail(path, "requires the extension " + extension + ", which this reader does not support");
+    if (std::find(kDecodedExtensions.begin(), kDecodedExtensions.end(), extension) ==
+        kDecodedExtensions.end())
+      fail(path, "requires the extension " + extension + ", which this reader does not support");
 
+  decode_meshopt_views(path, model);
   Soup_builder builder(path, model);
   for (const Placed_mesh& placed : placed_meshes(path, model)) {
     if (placed.mesh < 0 || std::size_t(placed.mesh) >= model.meshes.size())
@@ -555,8 +710,10 @@ std::string gltf_bytes(const Mesh& mesh, bool binary, const Material_references&
   }
   if (!wedges.uvs.empty()) {
     std::vector<float> uvs;
-    for (const auto& uv : wedges.uvs)
-      for (double c : uv) uvs.push_back(float(c));
+    for (const auto& uv : wedges.uvs) {
+      const std::array<double, 2> flipped = texture_coordinates_of_gltf(uv[0], uv[1]);
+      uvs.insert(uvs.end(), {float(flipped[0]), float(flipped[1])});
+    }
     shape.attributes["TEXCOORD_0"] = append_float_attribute(model, uvs, TINYGLTF_TYPE_VEC2);
   }
   if (!wedges.colors.empty()) {

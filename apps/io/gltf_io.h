@@ -26,7 +26,8 @@ struct Gltf_soup {
 // file has no scene), its positions and normals taken through its node's world transform (the
 // winding turned where the transform mirrors). Points and lines are skipped, as they have no
 // surface; triangle strips and fans are bad input. Each glTF vertex gives the corner tables an
-// entry of its NORMAL, TEXCOORD_0 (float, or normalized unsigned byte or short) and COLOR_0 (RGB,
+// entry of its NORMAL, TEXCOORD_0 (float, or normalized unsigned byte or short; v from the image's
+// top, glTF's origin, made 1 - v, from its bottom as in OBJ and PLY) and COLOR_0 (RGB,
 // alpha 1, or RGBA; the same types), and each primitive its material (names: the material's name,
 // or "material_<i>" when it has none). The points are joined where exactly equal
 // (join_equal_points), so that the vertices a UV seam or a primitive boundary splits become one
@@ -37,7 +38,8 @@ struct Gltf_soup {
 Gltf_soup read_gltf(const std::string& path, bool binary);
 
 // The bytes of a glTF file (GLB when `binary`) of `mesh`: one vertex per wedge (Wedge_mesh.h),
-// float32 positions, normals, texture coordinates and RGBA colours (glTF has no doubles; a corner
+// float32 positions, normals, texture coordinates (v made 1 - v, as glTF counts it from the
+// image's top) and RGBA colours (glTF has no doubles; a corner
 // without a value gets 0, or white for a colour, as glTF has no "none"), u32 indices, one
 // primitive per material in the order of the material indices. Materials: those of
 // `materials.gltf` when the mesh was read from glTF, passed through with their textures, samplers

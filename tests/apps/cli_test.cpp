@@ -920,6 +920,46 @@ TEST_F(Cli, ARepairedTexturedMeshKeepsItsSeamsThroughSimplification) {
   expect_texture_kept(in, out, 20000);
 }
 
+// glTF counts v from the image's top, OBJ from its bottom: bob's first corner, at v 0.728214 in
+// the OBJ, is at 1 - 0.728214 in the GLB (gltfpack and obj2gltf write 0.271786 too), and back in
+// an OBJ at 0.728214 to float precision.
+TEST_F(Cli, ObjToGltfCountsVFromTheImagesTopAndBack) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const fs::path glb = file("bob.glb"), obj = file("bob.obj");
+  ASSERT_EQ(
+      run("simplify", test_meshes::data_file("bob_tri.obj") + " " + glb.string() + " 1 --policy gh")
+          .exit_code,
+      0);
+  tinygltf::Model model;
+  std::string error, warning;
+  ASSERT_TRUE(tinygltf::TinyGLTF().LoadBinaryFromFile(&model, &error, &warning, glb.string()))
+      << error;
+  const tinygltf::Primitive& primitive = model.meshes.at(0).primitives.at(0);
+  const auto floats = [&model](int accessor) {
+    const tinygltf::Accessor& a = model.accessors.at(std::size_t(accessor));
+    const tinygltf::BufferView& view = model.bufferViews.at(std::size_t(a.bufferView));
+    const unsigned char* first = model.buffers.at(0).data.data() + view.byteOffset + a.byteOffset;
+    std::vector<float> values(a.count *
+                              std::size_t(tinygltf::GetNumComponentsInType(std::uint32_t(a.type))));
+    std::memcpy(values.data(), first, values.size() * sizeof(float));
+    return values;
+  };
+  const std::vector<float> uvs = floats(primitive.attributes.at("TEXCOORD_0"));
+  std::size_t at_first_corner = 0;
+  for (std::size_t i = 0; i < uvs.size(); i += 2)
+    if (uvs[i] == 0.799687f) {
+      ++at_first_corner;
+      EXPECT_EQ(uvs[i + 1], float(1 - 0.728214));
+    }
+  EXPECT_EQ(at_first_corner, 1u);
+  ASSERT_EQ(run("simplify", glb.string() + " " + obj.string() + " 1 --policy gh").exit_code, 0);
+  // The corner's coordinates as the GLB held them, v turned back: 0.728214 to float precision.
+  const apps::Polygon_soup back = apps::parse_obj(obj.string(), read_text(obj));
+  const std::array<double, 2> expected = {double(0.799687f), 1 - double(float(1 - 0.728214))};
+  EXPECT_EQ(std::count(back.corners.uvs.begin(), back.corners.uvs.end(), expected), 1);
+  EXPECT_NEAR(expected[1], 0.728214, 3e-8);
+}
+
 TEST_F(Cli, SimplifyCarriesPlyColoursIntoAGltf) {
   SKIP_IF_REAL_MESHES_ARE_OFF();
   const fs::path out = file("spot.gltf");

@@ -25,7 +25,9 @@
 #include <cgal_policies/Corner_attributes.h>
 
 #include <gtest/gtest.h>
+#include <meshoptimizer.h>
 #include <tiny_gltf.h>
+#include <nlohmann/json.hpp>
 
 #include <fcntl.h>
 #include <signal.h>
@@ -410,6 +412,8 @@ namespace corner_attributes {
 
 using gltf_fixtures::Gltf_builder;
 using gltf_fixtures::kFloat;
+constexpr int kUnsignedByte = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+constexpr int kUnsignedShort = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
 using gltf_fixtures::triangles;
 using gltf_fixtures::two_primitive_square;
 
@@ -835,11 +839,14 @@ TEST(CornerAttributes, PlyWrittenWithItsWedgesReadsBackExactly) {
 // ---------------------------------------------------------------------------------------------
 // glTF (.gltf, .glb): corners per glTF vertex, points welded, materials and images passed through.
 
-// Each value as glTF stores it: through float.
+// Each value as glTF stores it: through float, and v counted from the image's top (1 - v).
 std::vector<Face_corners> through_float(std::vector<Face_corners> faces) {
   for (Face_corners& face : faces)
-    for (auto& corner : face.corners)
+    for (auto& corner : face.corners) {
+      const double v = corner[4];
       for (double& c : corner) c = double(float(c));
+      corner[4] = 1 - double(float(1 - v));
+    }
   return faces;
 }
 
@@ -905,6 +912,23 @@ TEST(Gltf, ARoundTripKeepsEveryCornerToFloatPrecision) {
   fs::remove_all(folder);
 }
 
+// bob as OBJ, written as GLB and read back: every corner as it was, to float precision, its v
+// turned on the way out and back.
+TEST(Gltf, AnObjThroughGlbKeepsEveryCornerToFloatPrecision) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const fs::path folder = scratch_folder("gltf_bob");
+  apps::Read_report report;
+  const Mesh bob = apps::read_triangle_mesh(test_meshes::data_file("bob_tri.obj"), &report,
+                                            apps::Corner_attribute_reading::keep);
+  const fs::path out = folder / "bob.glb";
+  apps::write_mesh_atomically(bob, out.string(), report.materials);
+  const Mesh read =
+      apps::read_triangle_mesh(out.string(), nullptr, apps::Corner_attribute_reading::keep);
+  EXPECT_EQ(read.number_of_faces(), bob.number_of_faces());
+  EXPECT_EQ(sorted(face_corners(read)), sorted(through_float(face_corners(bob))));
+  fs::remove_all(folder);
+}
+
 // A glTF model whose buffer 0 gets each array as an accessor of its own.
 
 TEST(Gltf, TwoPrimitivesWithAUvSeamAreOneConnectedMesh) {
@@ -933,15 +957,260 @@ TEST(Gltf, TwoPrimitivesWithAUvSeamAreOneConnectedMesh) {
   const auto corner_at = [&](Mesh::Halfedge_index h, const apps::Point& p) {
     return mesh.point(mesh.target(h)) == p ? h : mesh.prev(h);
   };
+  // glTF counts v from the image's top, the mesh from its bottom: the reader turns it.
   EXPECT_EQ((*a.uvs)[corner_at(in_first, {11, 1, 0})], (Attributes::Uv{0.5, 0.5}));
-  EXPECT_EQ((*a.uvs)[corner_at(in_second, {11, 1, 0})], (Attributes::Uv{0.8, 0.8}));
-  EXPECT_EQ((*a.uvs)[corner_at(in_first, {10, 0, 0})], (Attributes::Uv{0, 0}));
-  EXPECT_EQ((*a.uvs)[corner_at(in_second, {10, 0, 0})], (Attributes::Uv{0, 0}));
+  EXPECT_EQ((*a.uvs)[corner_at(in_second, {11, 1, 0})], (Attributes::Uv{0.8, 1 - 0.8}));
+  EXPECT_EQ((*a.uvs)[corner_at(in_first, {10, 0, 0})], (Attributes::Uv{0, 1}));
+  EXPECT_EQ((*a.uvs)[corner_at(in_second, {10, 0, 0})], (Attributes::Uv{0, 1}));
   // Colours: the first primitive's, RGB with alpha 1; none on the second's corners.
   ASSERT_TRUE(a.colors);
   EXPECT_EQ((*a.colors)[corner_at(in_first, {10, 0, 0})], (Attributes::Color{0, 0.2, 1, 1}));
   EXPECT_TRUE(std::isnan((*a.colors)[corner_at(in_second, {10, 0, 0})][0]));
   fs::remove_all(folder);
+}
+
+// The unit square as KHR_mesh_quantization writes it: unnormalized u16 positions that the node
+// scales by a half, sparse (all zero, three of them substituted), normalized i8 normals,
+// unnormalized u8 texture coordinates that the material's KHR_texture_transform scales and
+// moves, u8 indices.
+Gltf_builder quantized_square() {
+  Gltf_builder b;
+  const int substitutes = b.accessor(std::vector<std::uint16_t>{2, 0, 0, 0, 2, 0, 2, 2, 0},
+                                     kUnsignedShort, TINYGLTF_TYPE_VEC3);
+  const int substituted =
+      b.accessor(std::vector<std::uint8_t>{1, 2, 3}, kUnsignedByte, TINYGLTF_TYPE_SCALAR);
+  tinygltf::Accessor sparse;
+  sparse.bufferView = -1;
+  sparse.componentType = kUnsignedShort;
+  sparse.type = TINYGLTF_TYPE_VEC3;
+  sparse.count = 4;
+  sparse.sparse.isSparse = true;
+  sparse.sparse.count = 3;
+  sparse.sparse.indices = {0, b.model.accessors[std::size_t(substituted)].bufferView,
+                           kUnsignedByte};
+  sparse.sparse.values = {b.model.accessors[std::size_t(substitutes)].bufferView, 0};
+  b.model.accessors.push_back(sparse);
+  const int position = int(b.model.accessors.size() - 1);
+  const int indices =
+      b.accessor(std::vector<std::uint8_t>{0, 1, 3, 0, 3, 2}, kUnsignedByte, TINYGLTF_TYPE_SCALAR);
+  const int uvs = b.accessor(std::vector<std::uint8_t>{0, 0, 4, 0, 0, 4, 4, 4}, kUnsignedByte,
+                             TINYGLTF_TYPE_VEC2);
+  tinygltf::Primitive square = triangles(position, indices, uvs, 0);
+  square.attributes["NORMAL"] =
+      b.accessor(std::vector<std::int8_t>{0, 0, 127, 0, 0, 127, 0, 0, 127, 0, 0, 127},
+                 TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_TYPE_VEC3, true);
+  b.model.materials.resize(1);
+  b.model.textures.resize(1);
+  b.model.textures[0].name = "paint";
+  b.model.materials[0].pbrMetallicRoughness.baseColorTexture.index = 0;
+  tinygltf::Value::Object transform;
+  transform["scale"] =
+      tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(0.25), tinygltf::Value(0.125)});
+  transform["offset"] =
+      tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(0.0), tinygltf::Value(0.5)});
+  b.model.materials[0].pbrMetallicRoughness.baseColorTexture.extensions["KHR_texture_transform"] =
+      tinygltf::Value(transform);
+  b.place({square}, {});
+  b.model.nodes[0].scale = {0.5, 0.5, 0.5};
+  b.model.extensionsUsed = {"KHR_mesh_quantization", "KHR_texture_transform"};
+  b.model.extensionsRequired = {"KHR_mesh_quantization"};
+  return b;
+}
+
+// Each corner's point and texture coordinate, sorted, and whether every normal is +z.
+std::vector<std::array<double, 5>> points_and_uvs(const Mesh& mesh, bool* normals_up = nullptr) {
+  const Attributes a(mesh);
+  std::vector<std::array<double, 5>> corners;
+  if (normals_up) *normals_up = a.normals.has_value();
+  for (const auto h : mesh.halfedges()) {
+    if (mesh.is_border(h)) continue;
+    const apps::Point& p = mesh.point(mesh.target(h));
+    corners.push_back({p.x(), p.y(), p.z(), (*a.uvs)[h][0], (*a.uvs)[h][1]});
+    if (normals_up && (*a.normals)[h] != apps::Kernel::Vector_3(0, 0, 1)) *normals_up = false;
+  }
+  std::sort(corners.begin(), corners.end());
+  return corners;
+}
+
+// The square's six corners: uv (u, v) / 4 scaled by (1, 1/2) and moved by (0, 1/2) by the
+// transform, then v turned (1 - v).
+const std::vector<std::array<double, 5>> kSquareCorners = {{0, 0, 0, 0, 0.5}, {0, 0, 0, 0, 0.5},
+                                                           {0, 1, 0, 0, 0},   {1, 0, 0, 1, 0.5},
+                                                           {1, 1, 0, 1, 0},   {1, 1, 0, 1, 0}};
+
+TEST(Gltf, QuantizedSparseAndTransformedAccessorsReadAsTheirValues) {
+  const fs::path folder = scratch_folder("gltf_quantized");
+  const fs::path in = folder / "square.gltf";
+  quantized_square().write(in);
+  apps::Read_report report;
+  const Mesh mesh =
+      apps::read_triangle_mesh(in.string(), &report, apps::Corner_attribute_reading::keep);
+  EXPECT_TRUE(report.repairs.empty());
+  ASSERT_EQ(mesh.number_of_faces(), 2u);
+  bool normals_up = false;
+  EXPECT_EQ(points_and_uvs(mesh, &normals_up), kSquareCorners);
+  EXPECT_TRUE(normals_up);
+  // The transform is in the coordinates now: a written file has neither it nor the quantization.
+  ASSERT_TRUE(report.materials.gltf);
+  EXPECT_TRUE(report.materials.gltf->materials.at(0)
+                  .pbrMetallicRoughness.baseColorTexture.extensions.empty());
+  EXPECT_TRUE(report.materials.gltf->extensionsUsed.empty());
+  const fs::path out = folder / "out.glb";
+  apps::write_mesh_atomically(mesh, out.string(), report.materials);
+  EXPECT_EQ(points_and_uvs(apps::read_triangle_mesh(out.string(), nullptr,
+                                                    apps::Corner_attribute_reading::keep)),
+            kSquareCorners);
+  EXPECT_EQ(read_text(out).find("KHR_"), std::string::npos);
+
+  // Integer positions are glTF only with the extension; other required extensions are refused.
+  const auto cause = [&](const Gltf_builder& b) {
+    b.write(folder / "other.gltf");
+    try {
+      apps::read_gltf((folder / "other.gltf").string(), false);
+    } catch (const apps::Io_error& e) {
+      return std::string(e.what()).substr((folder / "other.gltf").string().size());
+    }
+    return std::string();
+  };
+  Gltf_builder plain = quantized_square();
+  plain.model.extensionsUsed = {"KHR_texture_transform"};
+  plain.model.extensionsRequired.clear();
+  EXPECT_EQ(cause(plain),
+            ": mesh 0 primitive 0 POSITION (accessor 2): unsupported element or component type");
+  Gltf_builder draco = quantized_square();
+  draco.model.extensionsUsed.push_back("KHR_draco_mesh_compression");
+  draco.model.extensionsRequired.push_back("KHR_draco_mesh_compression");
+  EXPECT_EQ(cause(draco),
+            ": requires the extension KHR_draco_mesh_compression, which this reader does not "
+            "support");
+  fs::remove_all(folder);
+}
+
+// The same square with EXT_meshopt_compression: float positions, u16 texture coordinates
+// (normalized) and u16 indices, each view compressed by meshoptimizer's encoders into buffer 0,
+// over a fallback buffer of zeros that a reader without the extension would read.
+TEST(Gltf, MeshoptCompressedViewsAreDecoded) {
+  Gltf_builder b;
+  // tinygltf 2.7 writes no bufferView extensions: they are added to the JSON it writes.
+  nlohmann::json compressions = nlohmann::json::object();
+  const auto compressed_view = [&](const std::vector<unsigned char>& bytes, std::size_t count,
+                                   std::size_t stride, const char* mode) {
+    std::vector<unsigned char>& data = b.model.buffers[0].data;
+    compressions[std::to_string(b.model.bufferViews.size())] = {{"buffer", 0},
+                                                                {"byteOffset", data.size()},
+                                                                {"byteLength", bytes.size()},
+                                                                {"byteStride", stride},
+                                                                {"count", count},
+                                                                {"mode", mode}};
+    data.insert(data.end(), bytes.begin(), bytes.end());
+    data.resize((data.size() + 3) / 4 * 4);
+    std::vector<unsigned char>& fallback = b.model.buffers[1].data;
+    tinygltf::BufferView view;
+    view.buffer = 1;
+    view.byteOffset = fallback.size();
+    view.byteLength = count * stride;
+    if (std::string(mode) == "ATTRIBUTES") view.byteStride = stride;
+    fallback.resize(fallback.size() + count * stride);
+    b.model.bufferViews.push_back(view);
+    return int(b.model.bufferViews.size() - 1);
+  };
+  const auto vertices = [](const auto& values, std::size_t count) {
+    const std::size_t size = sizeof(values[0]) * values.size() / count;
+    std::vector<unsigned char> bytes(meshopt_encodeVertexBufferBound(count, size));
+    bytes.resize(
+        meshopt_encodeVertexBuffer(bytes.data(), bytes.size(), values.data(), count, size));
+    return bytes;
+  };
+  b.model.buffers.resize(2);
+  const std::vector<float> positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0};
+  const std::vector<std::uint16_t> uvs = {0, 32768, 65535, 32768, 0, 65535, 65535, 65535};
+  const std::vector<unsigned> indices = {0, 1, 3, 0, 3, 2};
+  std::vector<unsigned char> index_bytes(meshopt_encodeIndexBufferBound(6, 4));
+  index_bytes.resize(
+      meshopt_encodeIndexBuffer(index_bytes.data(), index_bytes.size(), indices.data(), 6));
+  const auto add_accessor = [&b](int view, int component_type, int type, bool normalized) {
+    tinygltf::Accessor a;
+    a.bufferView = view;
+    a.componentType = component_type;
+    a.type = type;
+    a.normalized = normalized;
+    a.count = type == TINYGLTF_TYPE_SCALAR ? 6 : 4;
+    b.model.accessors.push_back(a);
+    return int(b.model.accessors.size() - 1);
+  };
+  const int position = add_accessor(compressed_view(vertices(positions, 4), 4, 12, "ATTRIBUTES"),
+                                    kFloat, TINYGLTF_TYPE_VEC3, false);
+  const int uv = add_accessor(compressed_view(vertices(uvs, 4), 4, 4, "ATTRIBUTES"), kUnsignedShort,
+                              TINYGLTF_TYPE_VEC2, true);
+  const int index = add_accessor(compressed_view(index_bytes, 6, 2, "TRIANGLES"), kUnsignedShort,
+                                 TINYGLTF_TYPE_SCALAR, false);
+  b.place({triangles(position, index, uv, -1)}, {});
+  b.model.extensionsUsed = {"EXT_meshopt_compression"};
+  b.model.extensionsRequired = {"EXT_meshopt_compression"};
+  const fs::path folder = scratch_folder("gltf_meshopt");
+  const auto write = [&](const fs::path& path) {
+    b.write(path);
+    nlohmann::json gltf = nlohmann::json::parse(read_text(path));
+    for (const auto& [view, compression] : compressions.items())
+      gltf["bufferViews"][std::stoul(view)]["extensions"]["EXT_meshopt_compression"] = compression;
+    std::ofstream(path) << gltf.dump();
+  };
+  write(folder / "square.gltf");
+  const Mesh mesh = apps::read_triangle_mesh((folder / "square.gltf").string(), nullptr,
+                                             apps::Corner_attribute_reading::keep);
+  // 32768 / 65535 is a hair over a half.
+  const double half = 1 - 32768.0 / 65535;
+  EXPECT_EQ(points_and_uvs(mesh), (std::vector<std::array<double, 5>>{{0, 0, 0, 0, half},
+                                                                      {0, 0, 0, 0, half},
+                                                                      {0, 1, 0, 0, 0},
+                                                                      {1, 0, 0, 1, half},
+                                                                      {1, 1, 0, 1, 0},
+                                                                      {1, 1, 0, 1, 0}}));
+  // Bytes that do not decode are one bad-input line.
+  b.model.buffers[0].data[0] ^= 0xff;
+  write(folder / "broken.gltf");
+  try {
+    apps::read_gltf((folder / "broken.gltf").string(), false);
+    ADD_FAILURE() << "read a corrupt compressed view";
+  } catch (const apps::Io_error& e) {
+    EXPECT_EQ(std::string(e.what()), (folder / "broken.gltf").string() +
+                                         ": bufferView 0: its compressed bytes do not decode");
+  }
+  fs::remove_all(folder);
+}
+
+// Files another tool wrote: tests/apps/gltfpack/grid.obj through gltfpack 0.20, quantized (u16
+// positions under a scaling node, normalized u16 texture coordinates under a texture transform),
+// also meshopt-compressed, and in floats. Each reads as the grid: 128 faces, every point within
+// gltfpack's quantization step of (x, y, x y / 64), its texture coordinates of (x, y) / 8, v the
+// OBJ's way up, and no seam but the border.
+TEST(Gltf, GltfpackOutputsReadAsTheGrid) {
+  const fs::path folder = fs::path(CGAL_POLICIES_SOURCE_DIR) / "tests" / "apps" / "gltfpack";
+  for (const std::string name : {"grid_quantized.glb", "grid_meshopt.glb", "grid_float.glb"}) {
+    SCOPED_TRACE(name);
+    apps::Read_report report;
+    const Mesh mesh = apps::read_triangle_mesh((folder / name).string(), &report,
+                                               apps::Corner_attribute_reading::keep);
+    EXPECT_TRUE(report.repairs.empty());
+    EXPECT_EQ(mesh.number_of_faces(), 128u);
+    EXPECT_EQ(mesh.number_of_vertices(), 81u);
+    EXPECT_EQ(report.materials.names, std::vector<std::string>{"grid"});
+    const Attributes a(mesh);
+    ASSERT_TRUE(a.uvs.has_value());
+    double point_error = 0, uv_error = 0;
+    for (const auto h : mesh.halfedges()) {
+      if (mesh.is_border(h)) continue;
+      const apps::Point& p = mesh.point(mesh.target(h));
+      const double x = std::round(p.x()), y = std::round(p.y());
+      point_error = std::max(
+          {point_error, std::abs(p.x() - x), std::abs(p.y() - y), std::abs(p.z() - x * y / 64)});
+      uv_error =
+          std::max({uv_error, std::abs((*a.uvs)[h][0] - x / 8), std::abs((*a.uvs)[h][1] - y / 8)});
+    }
+    EXPECT_LE(point_error, 8.0 / 16383);     // a step of u16 positions over the grid's side
+    EXPECT_LE(uv_error, 16.003664 / 65535);  // a step of the transformed u16 coordinates
+    EXPECT_EQ(seam_edge_count(mesh), 32u);   // the border's 32 edges
+  }
 }
 
 // A node's world transform: a child turned a quarter about z and mirrored in x, under a parent

@@ -1,0 +1,137 @@
+#include "gltf_meshopt.h"
+
+#include "Io_error.h"
+
+#include <meshoptimizer.h>
+#include <tiny_gltf.h>
+#include <nlohmann/json.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+namespace cgal_policies {
+namespace io {
+namespace {
+
+[[noreturn]] void fail(const std::string& path, const std::string& cause) {
+  throw Io_error(Io_error::Kind::unreadable_input, path + ": " + cause);
+}
+
+std::size_t whole_number(const tinygltf::Value& object, const char* key, std::size_t otherwise) {
+  if (!object.Has(key)) return otherwise;
+  const double value = object.Get(key).GetNumberAsDouble();
+  return value >= 0 && value < 1e15 ? std::size_t(value) : std::size_t(-1);
+}
+
+std::string text(const tinygltf::Value& object, const char* key, const char* otherwise) {
+  return object.Has(key) && object.Get(key).IsString() ? object.Get(key).Get<std::string>()
+                                                       : otherwise;
+}
+
+// The decoded bytes of a view's compressed data, as the extension describes it.
+std::vector<unsigned char> decoded(const std::string& path, const tinygltf::Model& model,
+                                   const tinygltf::Value& compression, const std::string& name) {
+  const std::size_t buffer = whole_number(compression, "buffer", std::size_t(-1));
+  const std::size_t offset = whole_number(compression, "byteOffset", 0);
+  const std::size_t length = whole_number(compression, "byteLength", std::size_t(-1));
+  const std::size_t stride = whole_number(compression, "byteStride", 0);
+  const std::size_t count = whole_number(compression, "count", std::size_t(-1));
+  if (buffer >= model.buffers.size() || offset > model.buffers[buffer].data.size() ||
+      length > model.buffers[buffer].data.size() - offset)
+    fail(path, name + ": its compressed bytes reach past their buffer");
+  // Each element takes at least a bit of the compressed bytes: a larger count is forged.
+  if (stride == 0 || stride > 256 || count > 8 * length + 1024)
+    fail(path, name + ": a compressed view of " + std::to_string(count) + " elements of " +
+                   std::to_string(stride) + " bytes in " + std::to_string(length) + " bytes");
+  std::vector<unsigned char> bytes(count * stride);
+  const unsigned char* source = model.buffers[buffer].data.data() + offset;
+  const std::string mode = text(compression, "mode", "");
+  int status = -1;
+  if (mode == "ATTRIBUTES" && stride % 4 == 0)
+    status = meshopt_decodeVertexBuffer(bytes.data(), count, stride, source, length);
+  else if (mode == "TRIANGLES" && (stride == 2 || stride == 4))
+    status = meshopt_decodeIndexBuffer(bytes.data(), count, stride, source, length);
+  else if (mode == "INDICES" && (stride == 2 || stride == 4))
+    status = meshopt_decodeIndexSequence(bytes.data(), count, stride, source, length);
+  else
+    fail(path, name + ": unsupported compression mode '" + mode + "' for " +
+                   std::to_string(stride) + "-byte elements");
+  if (status != 0) fail(path, name + ": its compressed bytes do not decode");
+  const std::string filter = text(compression, "filter", "NONE");
+  if (filter == "OCTAHEDRAL" && (stride == 4 || stride == 8))
+    meshopt_decodeFilterOct(bytes.data(), count, stride);
+  else if (filter == "QUATERNION" && stride == 8)
+    meshopt_decodeFilterQuat(bytes.data(), count, stride);
+  else if (filter == "EXPONENTIAL" && stride % 4 == 0)
+    meshopt_decodeFilterExp(bytes.data(), count, stride);
+  else if (filter != "NONE")
+    fail(path, name + ": unsupported filter '" + filter + "'");
+  return bytes;
+}
+
+std::uint32_t little_endian_word(const std::string& bytes, std::size_t at) {
+  std::uint32_t word = 0;
+  std::memcpy(&word, bytes.data() + at, 4);  // every target here is little-endian, as GLB is
+  return word;
+}
+
+void append_word(std::string& bytes, std::uint32_t word) {
+  bytes.append(reinterpret_cast<const char*>(&word), 4);
+}
+
+}  // namespace
+
+std::string with_loadable_fallback_buffers(std::string bytes, bool binary) {
+  if (bytes.find("\"fallback\"") == std::string::npos) return bytes;
+  // A GLB: a 12-byte header, then the JSON chunk (length, type, text), then the rest.
+  std::size_t json_begin = 0, json_size = bytes.size();
+  if (binary) {
+    if (bytes.size() < 20) return bytes;
+    json_begin = 20;
+    json_size = little_endian_word(bytes, 12);
+    if (json_size > bytes.size() - json_begin) return bytes;
+  }
+  nlohmann::json gltf =
+      nlohmann::json::parse(bytes.begin() + std::ptrdiff_t(json_begin),
+                            bytes.begin() + std::ptrdiff_t(json_begin + json_size), nullptr, false);
+  if (!gltf.is_object() || !gltf.contains("buffers") || !gltf["buffers"].is_array()) return bytes;
+  for (nlohmann::json& buffer : gltf["buffers"]) {
+    const nlohmann::json* fallback =
+        buffer.is_object() && buffer.contains("extensions") ? &buffer["extensions"] : nullptr;
+    if (!fallback || !fallback->is_object() || !fallback->contains("EXT_meshopt_compression") ||
+        (*fallback)["EXT_meshopt_compression"].value("fallback", false) != true)
+      continue;
+    buffer["uri"] = "data:application/octet-stream;base64,AAAAAA==";
+    buffer["byteLength"] = 4;
+  }
+  std::string text = gltf.dump();
+  if (!binary) return text;
+  text.resize((text.size() + 3) / 4 * 4, ' ');
+  std::string glb = bytes.substr(0, 8);
+  const std::string rest = bytes.substr(json_begin + json_size);
+  append_word(glb, std::uint32_t(20 + text.size() + rest.size()));
+  append_word(glb, std::uint32_t(text.size()));
+  glb += bytes.substr(16, 4);  // "JSON"
+  return glb + text + rest;
+}
+
+void decode_meshopt_views(const std::string& path, tinygltf::Model& model) {
+  for (std::size_t v = 0; v < model.bufferViews.size(); ++v) {
+    tinygltf::BufferView& view = model.bufferViews[v];
+    const auto compression = view.extensions.find("EXT_meshopt_compression");
+    if (compression == view.extensions.end()) continue;
+    std::vector<unsigned char> bytes =
+        decoded(path, model, compression->second, "bufferView " + std::to_string(v));
+    view.byteLength = bytes.size();
+    view.byteOffset = 0;
+    view.buffer = int(model.buffers.size());
+    view.extensions.erase(compression);
+    model.buffers.emplace_back();
+    model.buffers.back().data = std::move(bytes);
+  }
+}
+
+}  // namespace io
+}  // namespace cgal_policies
