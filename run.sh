@@ -9,7 +9,7 @@ cd "$(dirname "$0")"
 required=(g++ make cmake libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev libgtest-dev
           clang-format libtinygltf-dev nlohmann-json3-dev libtbb-dev libmeshoptimizer-dev)
 optional=(libopenmesh-dev gnuplot-nox pkg-config libglfw3-dev libimgui-dev libosmesa6-dev libgl-dev
-          libstb-dev)
+          libstb-dev python3-dev python3-pybind11 python3-numpy python3-pytest)
 
 # Installs the given packages that are missing (default: both lists).
 install_missing() {
