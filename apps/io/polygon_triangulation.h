@@ -20,7 +20,8 @@ namespace io {
 // - a larger polygon that is simple seen along its normal goes to CGAL's triangulate_face;
 // - one that crosses itself or has no area, which triangulate_face could loop on
 //   (polygon_crossing.h), gets the least-area triangulation of its 3D boundary
-//   (triangulate_hole_polyline), and a fan when even that finds none.
+//   (triangulate_hole_polyline) when it has at most 500 corners (its time is cubic), and a fan
+//   when it has more or that finds none.
 std::vector<std::array<std::size_t, 3>> polygon_triangles(const std::vector<Point>& corners);
 
 }  // namespace io

@@ -382,6 +382,19 @@ TEST(PolygonCrossing, TheReaderTriangulatesEveryPolygonWhateverItsShape) {
   EXPECT_EQ(refusal({{0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}}), "");
 }
 
+// A star of 601 corners, each joined to the one 300 steps round, which crosses itself everywhere:
+// beyond 500 corners the boundary triangulation (cubic time) gives way to a fan.
+TEST(PolygonCrossing, ALargePolygonThatCrossesItselfBecomesAFan) {
+  std::vector<Point> star;
+  for (std::size_t i = 0; i < 601; ++i) {
+    const double angle = 2 * M_PI * double(i * 300 % 601) / 601;
+    star.emplace_back(std::cos(angle), std::sin(angle), 0.0);
+  }
+  std::vector<std::array<std::size_t, 3>> fan;
+  for (std::size_t i = 1; i + 1 < star.size(); ++i) fan.push_back({0, i, i + 1});
+  EXPECT_EQ(apps::polygon_triangles(star), fan);
+}
+
 // The quad's split: the diagonal whose triangles do not fold onto each other, else the one whose
 // smallest angle is larger.
 TEST(PolygonCrossing, AQuadIsSplitAlongItsBetterDiagonal) {
