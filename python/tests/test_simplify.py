@@ -37,6 +37,8 @@ def same_report(python_report, tool_report, repairs):
     ("fandisk.obj", ["0.05", "--policy", "fast"], {"ratio": 0.05, "policy": "fast"}),
     ("cow.obj", ["0.2", "--policy", "curvature", "--min-component", "3", "--smooth", "2"],
      {"ratio": 0.2, "policy": "curvature", "min_component": 3, "smooth": 2}),
+    # Cells on two threads, which call back into Python from threads of their own.
+    ("bunny.obj", ["0.1", "--parts", "4", "--threads", "2"], {"ratio": 0.1, "parts": 4, "threads": 2}),
 ])
 def test_arrays_give_the_tools_bytes(tmp_path, data, source, options, keywords):
     expected, tool_report = tool_run(tmp_path, data / source, "tool.obj", *options)
