@@ -332,13 +332,15 @@ bool uses(const tinygltf::Model& model, const std::string& extension) {
          model.extensionsUsed.end();
 }
 
-// A texture's KHR_texture_transform as the matrix it applies to texture coordinates (in glTF's
-// convention, before the v turn), rows of three; the identity without one.
-std::array<double, 6> texture_transform(const tinygltf::ExtensionMap& extensions) {
+// The KHR_texture_transform of a texture that reads TEXCOORD_0 as the matrix it applies to them
+// (in glTF's convention, before the v turn), rows of three; the identity without one.
+std::array<double, 6> texture_transform(const tinygltf::TextureInfo& texture) {
   std::array<double, 6> m = {1, 0, 0, 0, 1, 0};
-  const auto found = extensions.find("KHR_texture_transform");
-  if (found == extensions.end()) return m;
+  const auto found = texture.extensions.find("KHR_texture_transform");
+  if (found == texture.extensions.end() || texture.texCoord != 0) return m;
   const tinygltf::Value& t = found->second;
+  // A transform may name the set it reads, which overrides the texture's.
+  if (t.Has("texCoord") && t.Get("texCoord").GetNumberAsInt() != 0) return m;
   const auto pair = [&t](const char* key, double a, double b) {
     const tinygltf::Value& v = t.Get(key);
     return v.IsArray() && v.ArrayLen() == 2
@@ -470,8 +472,8 @@ class Soup_builder {
     const std::array<double, 6> m =
         primitive.material >= 0 && std::size_t(primitive.material) < m_model.materials.size()
             ? texture_transform(m_model.materials[std::size_t(primitive.material)]
-                                    .pbrMetallicRoughness.baseColorTexture.extensions)
-            : texture_transform({});
+                                    .pbrMetallicRoughness.baseColorTexture)
+            : texture_transform(tinygltf::TextureInfo());
     for (std::size_t i = 0; i < values.size(); i += 2)
       m_soup.corners.uvs.push_back(
           texture_coordinates_of_gltf(m[0] * values[i] + m[1] * values[i + 1] + m[2],

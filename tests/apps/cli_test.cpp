@@ -960,6 +960,22 @@ TEST_F(Cli, ObjToGltfCountsVFromTheImagesTopAndBack) {
   EXPECT_NEAR(expected[1], 0.728214, 3e-8);
 }
 
+// gltfpack's -c output (tests/apps/gltfpack/): quantized, meshopt-compressed, its texture
+// coordinates under a transform. simplify reads it, carries them and writes a plain GLB.
+TEST_F(Cli, SimplifyTakesGltfpacksCompressedOutput) {
+  const fs::path in = fs::path(CGAL_POLICIES_SOURCE_DIR) / "tests" / "apps" / "gltfpack" /
+                      "grid_meshopt.glb",
+                 out = file("grid.glb");
+  const Command_result r =
+      run("simplify", in.string() + " " + out.string() + " --faces 32 --policy gh --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(json_number(r.out, "input_faces"), 128) << r.out;
+  EXPECT_NE(r.out.find("\"attributes\": \"carried\""), std::string::npos) << r.out;
+  EXPECT_LE(uv_at_every_corner(out), 32u);
+  EXPECT_EQ(read_text(out).find("EXT_meshopt_compression"), std::string::npos);
+  expect_texture_kept(in, out, 2000);
+}
+
 TEST_F(Cli, SimplifyCarriesPlyColoursIntoAGltf) {
   SKIP_IF_REAL_MESHES_ARE_OFF();
   const fs::path out = file("spot.gltf");

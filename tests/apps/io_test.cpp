@@ -985,7 +985,7 @@ TEST(Gltf, TwoPrimitivesWithAUvSeamAreOneConnectedMesh) {
 // The unit square as KHR_mesh_quantization writes it: unnormalized u16 positions that the node
 // scales by a half, sparse (all zero, three of them substituted), normalized i8 normals,
 // unnormalized u8 texture coordinates that the material's KHR_texture_transform scales and
-// moves, u8 indices.
+// moves, a second set of them, u8 indices.
 Gltf_builder quantized_square() {
   Gltf_builder b;
   const int substitutes = b.accessor(std::vector<std::uint16_t>{2, 0, 0, 0, 2, 0, 2, 2, 0},
@@ -1009,6 +1009,9 @@ Gltf_builder quantized_square() {
   const int uvs = b.accessor(std::vector<std::uint8_t>{0, 0, 4, 0, 0, 4, 4, 4}, kUnsignedByte,
                              TINYGLTF_TYPE_VEC2);
   tinygltf::Primitive square = triangles(position, indices, uvs, 0);
+  // A second set, which the mesh has no place for: skipped.
+  square.attributes["TEXCOORD_1"] =
+      b.accessor(std::vector<std::uint8_t>(8, 9), kUnsignedByte, TINYGLTF_TYPE_VEC2);
   square.attributes["NORMAL"] =
       b.accessor(std::vector<std::int8_t>{0, 0, 127, 0, 0, 127, 0, 0, 127, 0, 0, 127},
                  TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_TYPE_VEC3, true);
