@@ -50,6 +50,7 @@
 #include <cgal_policies/Face_target.h>
 #include <cgal_policies/Fast_threshold_options.h>
 #include <cgal_policies/Feature_fusion_options.h>
+#include <cgal_policies/Flat_lindstrom_turk_options.h>
 #include <cgal_policies/Hausdorff_bounded_options.h>
 #include <cgal_policies/Quadric_options.h>
 #include <cgal_policies/Simplification_pass.h>
@@ -71,6 +72,7 @@ struct Simplification_options {
   Curvature_weighted_options curvature;
   Feature_fusion_options fusion;
   Fast_threshold_options fast;
+  Flat_lindstrom_turk_options flat_lt;
   Hausdorff_bounded_options hausdorff;
   Attribute_quadric_options attributes;
   double max_normal_angle_deg = 90;

@@ -28,7 +28,7 @@
 #include <cgal_policies/Simplification_report.h>
 #include <cgal_policies/internal/fit_carrying_corner_values.h>
 #include <cgal_policies/internal/run_cgal_policies.h>
-#include <cgal_policies/internal/run_fast_policy.h>
+#include <cgal_policies/internal/run_flat_array_policies.h>
 #include <cgal_policies/internal/run_hausdorff_policy.h>
 #include <cgal_policies/internal/run_partitioned.h>
 #include <cgal_policies/internal/run_quadric_policies.h>
@@ -170,6 +170,8 @@ class Simplification_pipeline {
         return internal::run_fusion(mesh, target, options);
       case Simplification_policy::fast:
         return internal::run_fast(mesh, target, options);
+      case Simplification_policy::flat_lt:
+        return internal::run_flat_lt(mesh, target, options);
       case Simplification_policy::hausdorff:
         return internal::run_hausdorff(mesh, target, options);
       case Simplification_policy::attributes:

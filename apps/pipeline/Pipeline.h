@@ -27,6 +27,7 @@ extern CGAL_POLICIES_APPS_POLICY_RUN(run_classic);
 extern CGAL_POLICIES_APPS_POLICY_RUN(run_curvature);
 extern CGAL_POLICIES_APPS_POLICY_RUN(run_fusion);
 extern CGAL_POLICIES_APPS_POLICY_RUN(run_fast);
+extern CGAL_POLICIES_APPS_POLICY_RUN(run_flat_lt);
 extern CGAL_POLICIES_APPS_POLICY_RUN(run_hausdorff);
 extern CGAL_POLICIES_APPS_POLICY_RUN(run_attributes);
 // pipeline.cpp

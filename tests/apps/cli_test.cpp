@@ -246,7 +246,9 @@ TEST_F(Cli, OptionsOutOfRangeAreRefusedBeforeTheInputIsRead) {
                                                          {"curvature", "--eps", "-0.1"},
                                                          {"fusion", "--mu", "-2"},
                                                          {"classic", "--max-normal-angle", "200"},
-                                                         {"fast", "--max-error", "0.01"}};
+                                                         {"fast", "--max-error", "0.01"},
+                                                         {"flat-lt", "--volume-weight", "-1"},
+                                                         {"flat-lt", "--time-limit", "5"}};
   for (const auto& [policy, option, value] : cases) {
     const Command_result r =
         run("simplify", io + "--policy " + policy + " " + option + " " + value);

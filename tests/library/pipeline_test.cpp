@@ -751,7 +751,8 @@ TEST_P(PartitionedRun, KeepsTheInvariantsAndGivesTheSameBytesOnAnyThreadCount) {
   EXPECT_TRUE(bytes[0] == bytes[1]) << "one thread and two wrote different files";
 }
 
-INSTANTIATE_TEST_SUITE_P(Policies, PartitionedRun, testing::Values("lt", "classic", "fast"),
+INSTANTIATE_TEST_SUITE_P(Policies, PartitionedRun,
+                         testing::Values("lt", "classic", "fast", "flat-lt"),
                          [](const auto& test) { return identifier(test.param); });
 
 // The fit by cells pins the vertices on the cuts for half its rounds: its mean error stays within
