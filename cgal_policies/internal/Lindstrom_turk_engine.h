@@ -104,8 +104,8 @@ class Lindstrom_turk_engine {
   using Reference = typename Mesh::Reference;
 
   // [LT98]'s volume terms of faces around an origin o: per face its normal n (twice its area) and
-  // the determinant d = n·(p0 - o) of its corners less o, summed as n, d, n n^T, d n and d^2,
-  // so that the volume a point x adds to them is n·(x - o) - d.
+  // the determinant d = n·(p0 - o) of its corners less o, summed as n, d, n n^T, d n and d^2;
+  // n·(x - o) - d is six times the volume of the tetrahedron a point x makes with the face.
   struct Volume_terms {
     Eigen::Vector3d normal = Eigen::Vector3d::Zero();
     double determinant = 0;
