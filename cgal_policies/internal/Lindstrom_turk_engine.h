@@ -228,12 +228,20 @@ class Lindstrom_turk_engine {
            m_changed[std::size_t(edge.b)] <= edge.time;
   }
 
-  void push(int a, const Neighbour& b) {
+  // The heap entry of the edge from a to b; none while its collapse is refused (until its star
+  // changes).
+  std::optional<Queued> entry(int a, const Neighbour& b) {
     Eigen::Vector3d unused;
     const double cost = edge_cost(a, b, unused);
-    if (!std::isfinite(cost)) return;  // refused until its star changes
-    m_heap.push_back({cost, local(b.vertex, a).squaredNorm(), a, b.vertex, m_time});
-    std::push_heap(m_heap.begin(), m_heap.end(), After());
+    if (!std::isfinite(cost)) return std::nullopt;
+    return Queued{cost, local(b.vertex, a).squaredNorm(), a, b.vertex, m_time};
+  }
+
+  void push(int a, const Neighbour& b) {
+    if (const std::optional<Queued> queued = entry(a, b)) {
+      m_heap.push_back(*queued);
+      std::push_heap(m_heap.begin(), m_heap.end(), After());
+    }
   }
 
   // Every edge once, from its smaller end.
@@ -244,10 +252,7 @@ class Lindstrom_turk_engine {
       collect_neighbours(u);
       for (const Neighbour& w : m_neighbours) {
         if (w.vertex < u) continue;
-        Eigen::Vector3d unused;
-        const double cost = edge_cost(u, w, unused);
-        if (std::isfinite(cost))
-          m_heap.push_back({cost, local(w.vertex, u).squaredNorm(), u, w.vertex, m_time});
+        if (const std::optional<Queued> queued = entry(u, w)) m_heap.push_back(*queued);
       }
     }
     std::make_heap(m_heap.begin(), m_heap.end(), After());
