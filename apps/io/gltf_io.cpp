@@ -169,12 +169,18 @@ struct Accessor_rule {
   Integers integers;
 };
 
+// BufferView `index`, after checking that it exists.
+const tinygltf::BufferView& buffer_view(const std::string& path, const tinygltf::Model& model,
+                                        int index, const std::string& name) {
+  if (index < 0 || std::size_t(index) >= model.bufferViews.size())
+    fail(path, name + ": no bufferView");
+  return model.bufferViews[std::size_t(index)];
+}
+
 // The bytes [offset, offset + size) of bufferView `index`, after checking that they are there.
 const unsigned char* view_bytes(const std::string& path, const tinygltf::Model& model, int index,
                                 std::size_t offset, std::size_t size, const std::string& name) {
-  if (index < 0 || std::size_t(index) >= model.bufferViews.size())
-    fail(path, name + ": no bufferView");
-  const tinygltf::BufferView& view = model.bufferViews[std::size_t(index)];
+  const tinygltf::BufferView& view = buffer_view(path, model, index, name);
   if (view.buffer < 0 || std::size_t(view.buffer) >= model.buffers.size() ||
       view.byteOffset > model.buffers[std::size_t(view.buffer)].data.size() ||
       view.byteLength > model.buffers[std::size_t(view.buffer)].data.size() - view.byteOffset)
@@ -223,7 +229,7 @@ std::vector<double> accessor_values(const std::string& path, const tinygltf::Mod
     values.assign(count * components, 0.0);
   } else if (count > 0) {
     const std::size_t view_stride =
-        std::size_t(model.bufferViews.at(std::size_t(accessor.bufferView)).byteStride);
+        std::size_t(buffer_view(path, model, accessor.bufferView, name).byteStride);
     const std::size_t stride = view_stride > 0 ? view_stride : element;
     if (stride < element ||
         count - 1 > (std::numeric_limits<std::size_t>::max() - element) / stride)

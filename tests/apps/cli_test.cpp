@@ -1011,6 +1011,9 @@ TEST_F(Cli, BadGltfIsOneBadInputLineAndNoOutput) {
   const float nan = std::nanf("");
   one_triangle({0, 0, 0, 1, 0, 0, 0, nan, 0}, {0, 1, 2}).write(file("nan.glb"));
   one_triangle({0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 1, 3}).write(file("index.glb"));
+  Gltf_builder no_view = one_triangle({0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 1, 2});
+  no_view.model.accessors[0].bufferView = 7;  // only views 0 and 1 exist
+  no_view.write(file("no_view.glb"));
   Gltf_builder raw_uvs = two_primitive_square();
   raw_uvs.model.accessors[4].normalized = false;  // the second primitive's u16 coordinates
   raw_uvs.write(file("raw_uvs.glb"));
@@ -1027,6 +1030,7 @@ TEST_F(Cli, BadGltfIsOneBadInputLineAndNoOutput) {
   const std::map<std::string, std::string> causes = {
       {"nan.glb", "mesh 0 primitive 0: the position of vertex 2 is not finite"},
       {"index.glb", "mesh 0 primitive 0: index 3 is out of range (3 vertices)"},
+      {"no_view.glb", "mesh 0 primitive 0 POSITION (accessor 0): no bufferView"},
       {"raw_uvs.glb",
        "mesh 0 primitive 1 TEXCOORD_0 (accessor 4): integer values must be normalized"},
       {"cycle.glb", "the node hierarchy has a cycle"},
