@@ -2,6 +2,7 @@
 
 #include "Io_error.h"
 #include "Wedge_mesh.h"
+#include "glb_chunks.h"
 #include "gltf_meshopt.h"
 
 #include <tiny_gltf.h>
@@ -648,6 +649,7 @@ Gltf_soup read_gltf(const std::string& path, bool binary) {
     const std::string bytes = with_loadable_fallback_buffers(
         std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()),
         binary);
+    if (binary) check_glb_chunks(path, bytes);
     if (bytes.size() > std::numeric_limits<unsigned>::max())
       fail(path, "cannot parse: larger than tinygltf reads (4 GiB)");
     const std::string folder = fs::absolute(path).parent_path().string();

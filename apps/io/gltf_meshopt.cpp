@@ -1,6 +1,7 @@
 #include "gltf_meshopt.h"
 
 #include "Io_error.h"
+#include "glb_chunks.h"
 
 #include <meshoptimizer.h>
 #include <tiny_gltf.h>
@@ -8,7 +9,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <vector>
 
 namespace cgal_policies {
@@ -71,16 +71,6 @@ std::vector<unsigned char> decoded(const std::string& path, const tinygltf::Mode
   return bytes;
 }
 
-std::uint32_t little_endian_word(const std::string& bytes, std::size_t at) {
-  std::uint32_t word = 0;
-  std::memcpy(&word, bytes.data() + at, 4);  // every target here is little-endian, as GLB is
-  return word;
-}
-
-void append_word(std::string& bytes, std::uint32_t word) {
-  bytes.append(reinterpret_cast<const char*>(&word), 4);
-}
-
 }  // namespace
 
 std::string with_loadable_fallback_buffers(std::string bytes, bool binary) {
@@ -90,7 +80,7 @@ std::string with_loadable_fallback_buffers(std::string bytes, bool binary) {
   if (binary) {
     if (bytes.size() < 20) return bytes;
     json_begin = 20;
-    json_size = little_endian_word(bytes, 12);
+    json_size = glb_word(bytes, 12);
     if (json_size > bytes.size() - json_begin) return bytes;
   }
   nlohmann::json gltf =
@@ -111,8 +101,8 @@ std::string with_loadable_fallback_buffers(std::string bytes, bool binary) {
   text.resize((text.size() + 3) / 4 * 4, ' ');
   std::string glb = bytes.substr(0, 8);
   const std::string rest = bytes.substr(json_begin + json_size);
-  append_word(glb, std::uint32_t(20 + text.size() + rest.size()));
-  append_word(glb, std::uint32_t(text.size()));
+  append_glb_word(glb, std::uint32_t(20 + text.size() + rest.size()));
+  append_glb_word(glb, std::uint32_t(text.size()));
   glb += bytes.substr(16, 4);  // "JSON"
   return glb + text + rest;
 }

@@ -1023,6 +1023,11 @@ TEST_F(Cli, BadGltfIsOneBadInputLineAndNoOutput) {
   two_primitive_square().write(file("whole.glb"));
   const std::string whole = read_text(file("whole.glb"));
   write("truncated.glb", whole.substr(0, whole.size() / 2));
+  // Eight bytes fewer, the header's length to match: the BIN chunk now ends past the file.
+  std::string overrun = whole.substr(0, whole.size() - 8);
+  const std::uint32_t overrun_length = std::uint32_t(overrun.size());
+  overrun.replace(8, 4, reinterpret_cast<const char*>(&overrun_length), 4);
+  write("chunk_overrun.glb", overrun);
   write("malformed.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [");
   write("missing_buffer.gltf",
         "{\"asset\": {\"version\": \"2.0\"}, \"buffers\": [{\"uri\": \"gone.bin\", "
@@ -1035,6 +1040,7 @@ TEST_F(Cli, BadGltfIsOneBadInputLineAndNoOutput) {
        "mesh 0 primitive 1 TEXCOORD_0 (accessor 4): integer values must be normalized"},
       {"cycle.glb", "the node hierarchy has a cycle"},
       {"truncated.glb", "cannot parse: "},
+      {"chunk_overrun.glb", "cannot parse: the GLB chunk at byte "},
       {"malformed.gltf", "cannot parse: "},
       {"missing_buffer.gltf", "cannot parse: "}};
   for (const auto& [name, cause] : causes) {
