@@ -26,6 +26,7 @@
 #include <cgal_policies/Laplacian_smoother.h>
 #include <cgal_policies/Simplification_options.h>
 #include <cgal_policies/Simplification_report.h>
+#include <cgal_policies/internal/Streamed_cut.h>
 #include <cgal_policies/internal/fit_carrying_corner_values.h>
 #include <cgal_policies/internal/run_cgal_policies.h>
 #include <cgal_policies/internal/run_flat_array_policies.h>
@@ -39,6 +40,7 @@
 #include <chrono>
 #include <cstddef>
 #include <optional>
+#include <stdexcept>
 
 namespace cgal_policies {
 
@@ -125,6 +127,77 @@ class Simplification_pipeline {
         report.fit = report.parts > 1
                          ? internal::fit_by_cells(mesh, input, *cells, m_options.threads, fit)
                          : internal::fit_carrying_corner_values(mesh, input, fit);
+        report.fitted = true;
+      });
+    report.output_faces = mesh.number_of_faces();
+    report.output_vertices = mesh.number_of_vertices();
+    return report;
+  }
+
+  // A mesh too large to hold whole, read from `source` in passes (the concept is in
+  // internal/Streamed_cut.h) into `mesh`, which it replaces: equal points joined, cut into cells
+  // with the triangles spilled to temporary files, each cell's part simplified as in a partitioned
+  // run, the parts stitched and finished, then the fit by cells against the spilled input. Peak
+  // memory: the points, the parts in flight and the output. Without corner attributes, and
+  // without the passes that need the whole input (merge, components, a bound, bounded
+  // smoothing): those options are preconditions. The simplification pass's seconds include the
+  // reading.
+  template <class Source>
+  Simplification_report run_streamed(const Source& source, Mesh& mesh) const {
+    CGAL_precondition(m_options.two_sided_bound() == 0 && !m_options.on_collapse);
+    CGAL_precondition(m_options.merge_distance == 0 && m_options.min_component <= 1);
+    CGAL_precondition(!m_options.smoothing.bounded);
+    Simplification_report report;
+    mesh.clear();
+    const auto start = std::chrono::steady_clock::now();
+    const internal::Streamed_input<Point> input = internal::read_streamed_input<Point>(source);
+    report.input_faces = input.faces;
+    report.input_vertices = input.points.size();
+    report.target_faces = m_options.target.of(report.input_faces);
+    const internal::Spatial_cells cells(input.sample, m_options.cell_count(input.faces));
+    report.parts = cells.size();
+    internal::Spill_files spills(cells.size());
+    const std::vector<std::uint32_t> vertex_cell =
+        internal::cut_into_spills(source, input, cells, spills);
+    const auto input_parts = [&](const internal::Spill_files& files) {
+      return [&input, &vertex_cell, spilled = &files](std::size_t c) {
+        return internal::streamed_part(input.points, vertex_cell, spilled->read(c));
+      };
+    };
+    Simplification_options part_options = m_options;
+    part_options.progress = nullptr;
+    const std::optional<internal::Policy_outcome> outcome = internal::run_parts(
+        cells.size(), input.faces, input.points.size(), report.target_faces, m_options.threads,
+        input_parts(spills),
+        [&](Mesh& m, std::size_t target) {
+          return run_policy(m, target, &m == &mesh ? m_options : part_options);
+        },
+        mesh);
+    if (!outcome) throw std::logic_error("a part lost a vertex of its cut");
+    report.stop_reason = outcome->stop_reason;
+    mesh.collect_garbage();
+    report.pass_seconds[std::size_t(Simplification_pass::simplification)] =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (m_options.pass_done) m_options.pass_done(Simplification_pass::simplification);
+    if (m_options.drop_small_pieces && report.stop_reason == Stop_reason::no_collapse_left)
+      timed(report, Simplification_pass::pieces, [&] {
+        report.dropped_after = drop_smallest_components_until(mesh, report.target_faces);
+      });
+    if (m_options.smoothing.iterations > 0 && !interrupted(report))
+      timed(report, Simplification_pass::smoothing, [&] { smooth(mesh, Mesh(), 0); });
+    if (m_options.fit && !interrupted(report))
+      timed(report, Simplification_pass::fit, [&] {
+        Two_sided_fit_options fit = m_options.fit_options;
+        fit.max_normal_angle_deg = m_options.max_normal_angle_deg;
+        const internal::Spatial_cells shifted(input.sample, cells.size(),
+                                              internal::kShiftedQuantile);
+        std::optional<internal::Spill_files> shifted_spills;
+        report.fit = internal::fit_by_cells(
+            mesh, cells, shifted, m_options.threads, fit, [&](const internal::Spatial_cells& by) {
+              if (&by == &cells) return input_parts(spills);
+              internal::spill_again(input, spills, shifted, shifted_spills.emplace(cells.size()));
+              return input_parts(*shifted_spills);
+            });
         report.fitted = true;
       });
     report.output_faces = mesh.number_of_faces();

@@ -14,6 +14,7 @@
 #include <cgal_policies/internal/mesh_geometry.h>
 #include <cgal_policies/internal/part_vertex_maps.h>
 
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/boost/graph/iterator.h>
 
@@ -201,6 +202,11 @@ CGAL::Surface_mesh<Point> stitch_parts(const std::vector<CGAL::Surface_mesh<Poin
     }
   }
   Mesh whole;
+  // The parts of a streamed run were never one mesh: where the input's surface is not manifold,
+  // they meet again in a vertex or an edge that is not, split here as in the parts. Such parts
+  // carry no corner values.
+  if (!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
+    CGAL::Polygon_mesh_processing::orient_polygon_soup(points, polygons);
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, whole);
   copy_corner_values(owner, corners, polygons, whole);
   return whole;

@@ -64,23 +64,25 @@ void collapse_zero_length_edges(CGAL::Surface_mesh<Point>& mesh) {
   mesh.collect_garbage();
 }
 
-// Simplifies `mesh` (no garbage) as the header says, run_policy(part or whole, target) running
-// the policy. Nothing, and `mesh` with only its edges of zero length collapsed, when a part lost a
-// locked vertex all the same: the caller then runs the policy on the whole.
-template <class Point, class RunPolicy>
-std::optional<Policy_outcome> run_partitioned(CGAL::Surface_mesh<Point>& mesh, std::size_t target,
-                                              const Spatial_cells& cells, std::size_t threads,
-                                              const RunPolicy& run_policy) {
-  using Mesh = CGAL::Surface_mesh<Point>;
-  collapse_zero_length_edges(mesh);
-  const std::vector<std::uint32_t> cell = face_cells(mesh, cells);
-  std::vector<Mesh> parts(cells.size());
-  std::vector<char> kept_locks(cells.size(), 1);
+// The parts of cells 0 to `cells` - 1 of a mesh of `whole_faces` faces and `whole_vertices`
+// vertices (make_part(c) makes the part of cell c, with its lock and origin maps), each simplified
+// toward kPartShare times its share of `target`, run_policy(part or whole, target) running the
+// policy; then `whole` becomes them stitched, simplified to `target`. Nothing, and `whole` as it
+// was, when a part lost a locked vertex.
+template <class Point, class MakePart, class RunPolicy>
+std::optional<Policy_outcome> run_parts(std::size_t cells, std::size_t whole_faces,
+                                        std::size_t whole_vertices, std::size_t target,
+                                        std::size_t threads, const MakePart& make_part,
+                                        const RunPolicy& run_policy,
+                                        CGAL::Surface_mesh<Point>& whole) {
+  std::vector<CGAL::Surface_mesh<Point>> parts(cells);
+  std::vector<char> kept_locks(cells, 1);
   // Each part keeps kPartShare times its share of the target: the last collapses, which set where
   // the detail goes, are left to the run over the whole, ordered across the cuts.
-  const double share = std::min(1.0, kPartShare * double(target) / double(mesh.number_of_faces()));
+  const double share = std::min(1.0, kPartShare * double(target) / double(whole_faces));
   for_each_in_parallel(parts.size(), threads, [&](std::size_t c) {
-    parts[c] = mesh_part(mesh, cell, std::uint32_t(c));
+    parts[c] = make_part(c);
+    if (parts[c].is_empty()) return;
     const std::size_t locked = locked_vertex_count(parts[c]);
     run_policy(parts[c], std::size_t(std::llround(share * double(parts[c].number_of_faces()))));
     parts[c].collect_garbage();
@@ -88,9 +90,23 @@ std::optional<Policy_outcome> run_partitioned(CGAL::Surface_mesh<Point>& mesh, s
   });
   for (const char kept : kept_locks)
     if (!kept) return std::nullopt;
-  mesh = stitch_parts(parts, mesh.number_of_vertices());
+  whole = stitch_parts(parts, whole_vertices);
   parts.clear();
-  return run_policy(mesh, target);
+  return run_policy(whole, target);
+}
+
+// Simplifies `mesh` (no garbage) as the header says, by run_parts over `cells`. Nothing, and
+// `mesh` with only its edges of zero length collapsed, when a part lost a locked vertex all the
+// same: the caller then runs the policy on the whole.
+template <class Point, class RunPolicy>
+std::optional<Policy_outcome> run_partitioned(CGAL::Surface_mesh<Point>& mesh, std::size_t target,
+                                              const Spatial_cells& cells, std::size_t threads,
+                                              const RunPolicy& run_policy) {
+  collapse_zero_length_edges(mesh);
+  const std::vector<std::uint32_t> cell = face_cells(mesh, cells);
+  return run_parts(
+      cells.size(), mesh.number_of_faces(), mesh.number_of_vertices(), target, threads,
+      [&](std::size_t c) { return mesh_part(mesh, cell, std::uint32_t(c)); }, run_policy, mesh);
 }
 
 // Adds the moves and flips of `from` to `to`; the rounds are the caller's to count.
@@ -102,21 +118,19 @@ inline void add_fit_counts(Two_sided_fit_report& to, const Two_sided_fit_report&
 }
 
 // The fitting pass by cells: each cell of the output fitted to the same cell of the input
-// (`input_cell`, each input face's cell), on its own core, its cut vertices pinned, then the cells
-// stitched back. The reports add up; the rounds are those of the cell that ran the most.
-template <class Point>
-Two_sided_fit_report fit_partitioned(CGAL::Surface_mesh<Point>& mesh,
-                                     const CGAL::Surface_mesh<Point>& input,
-                                     const std::vector<std::uint32_t>& input_cell,
-                                     const Spatial_cells& cells, std::size_t threads,
-                                     const Two_sided_fit_options& options) {
+// (input_part(c), without corner values), on its own core, its cut vertices pinned, then the
+// cells stitched back. The reports add up; the rounds are those of the cell that ran the most.
+template <class Point, class InputPart>
+Two_sided_fit_report fit_partitioned(CGAL::Surface_mesh<Point>& mesh, const Spatial_cells& cells,
+                                     std::size_t threads, const Two_sided_fit_options& options,
+                                     const InputPart& input_part) {
   using Mesh = CGAL::Surface_mesh<Point>;
   const std::vector<std::uint32_t> output_cell = face_cells(mesh, cells);
   std::vector<Mesh> parts(cells.size());
   std::vector<Two_sided_fit_report> reports(cells.size());
   for_each_in_parallel(parts.size(), threads, [&](std::size_t c) {
     parts[c] = mesh_part(mesh, output_cell, std::uint32_t(c));
-    const Mesh near = mesh_part(input, input_cell, std::uint32_t(c), false);
+    const Mesh near = input_part(c);
     if (parts[c].number_of_faces() == 0 || near.number_of_faces() == 0) return;
     const auto lock = find_vertex_map<bool>(parts[c], kLockedVertexMap);
     reports[c] = fit_carrying_corner_values(parts[c], near, options,
@@ -134,26 +148,38 @@ Two_sided_fit_report fit_partitioned(CGAL::Surface_mesh<Point>& mesh,
 // The cells of the second half of a fit by cells are cut at these quantiles.
 constexpr double kShiftedQuantile = 0.35;
 
-// The fit by cells, in two halves of its rounds: over the run's cells, then over cells cut
+// The fit by cells, in two halves of its rounds: over the run's `cells`, then over `shifted`, cut
 // elsewhere (kShiftedQuantile), so that the vertices pinned on the first cuts move too.
+// input_parts(cells) gives the callable that makes the input part of a cell of those cells.
+template <class Point, class InputParts>
+Two_sided_fit_report fit_by_cells(CGAL::Surface_mesh<Point>& mesh, const Spatial_cells& cells,
+                                  const Spatial_cells& shifted, std::size_t threads,
+                                  Two_sided_fit_options fit, const InputParts& input_parts) {
+  const int rounds = fit.rounds;
+  fit.rounds = (rounds + 1) / 2;
+  Two_sided_fit_report report = fit_partitioned(mesh, cells, threads, fit, input_parts(cells));
+  fit.rounds = rounds - fit.rounds;
+  if (fit.rounds == 0) return report;
+  const Two_sided_fit_report second =
+      fit_partitioned(mesh, shifted, threads, fit, input_parts(shifted));
+  report.rounds += second.rounds;
+  add_fit_counts(report, second);
+  return report;
+}
+
+// The same, `input` held whole.
 template <class Point>
 Two_sided_fit_report fit_by_cells(CGAL::Surface_mesh<Point>& mesh,
                                   const CGAL::Surface_mesh<Point>& input,
                                   const Spatial_cells& cells, std::size_t threads,
-                                  Two_sided_fit_options fit) {
+                                  const Two_sided_fit_options& fit) {
   const std::vector<Eigen::Vector3d> centroids = face_centroids(input);
-  const int rounds = fit.rounds;
-  fit.rounds = (rounds + 1) / 2;
-  Two_sided_fit_report report =
-      fit_partitioned(mesh, input, face_cells(centroids, cells), cells, threads, fit);
-  fit.rounds = rounds - fit.rounds;
-  if (fit.rounds == 0) return report;
   const Spatial_cells shifted(centroids, cells.size(), kShiftedQuantile);
-  const Two_sided_fit_report second =
-      fit_partitioned(mesh, input, face_cells(centroids, shifted), shifted, threads, fit);
-  report.rounds += second.rounds;
-  add_fit_counts(report, second);
-  return report;
+  return fit_by_cells(mesh, cells, shifted, threads, fit, [&](const Spatial_cells& by) {
+    return [&input, cell = face_cells(centroids, by)](std::size_t c) {
+      return mesh_part(input, cell, std::uint32_t(c), false);
+    };
+  });
 }
 
 }  // namespace internal

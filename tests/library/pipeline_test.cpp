@@ -27,13 +27,17 @@
 
 #include <unistd.h>
 
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -810,6 +814,151 @@ TEST(PartitionedRun, KeepsTheSeamsOfATexturedMesh) {
   const apps::Attribute_error error = apps::measure_attribute_error(input, mesh, 20000);
   EXPECT_EQ(error.seam_loops_b, error.seam_loops_a);
   EXPECT_TRUE(apps::check_mesh_validity(mesh).closed);
+}
+
+// A mesh as a streamed run reads it: its points and triangles, passed over as often as asked.
+// The pass over the triangles numbered `failing_pass` (from 0) throws instead.
+struct Vector_source {
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  int failing_pass = -1;
+  mutable int passes = 0;
+
+  template <class F>
+  void for_each_point(F f) const {
+    for (const auto& p : points) f(p[0], p[1], p[2]);
+  }
+  template <class F>
+  void for_each_triangle(F f) const {
+    if (passes++ == failing_pass) throw std::runtime_error("the source failed");
+    for (const auto& t : triangles) f(t[0], t[1], t[2]);
+  }
+};
+
+Vector_source source_of(const Mesh& mesh) {
+  Vector_source source;
+  for (const auto v : mesh.vertices())
+    source.points.push_back({mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()});
+  for (const auto f : mesh.faces()) {
+    std::array<std::uint32_t, 3> t;
+    int k = 0;
+    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      t[k++] = std::uint32_t(std::size_t(v));
+    source.triangles.push_back(t);
+  }
+  return source;
+}
+
+// A temporary folder of its own for a streamed run's spill files (TMPDIR while it lives), to
+// check that the run leaves nothing in it.
+class Temporary_folder {
+ public:
+  Temporary_folder()
+      : m_path(testing::TempDir() + "streamed_" + std::to_string(::getpid())),
+        m_before(std::getenv("TMPDIR") ? std::getenv("TMPDIR") : "") {
+    std::filesystem::create_directories(m_path);
+    ::setenv("TMPDIR", m_path.c_str(), 1);
+  }
+  ~Temporary_folder() {
+    if (m_before.empty())
+      ::unsetenv("TMPDIR");
+    else
+      ::setenv("TMPDIR", m_before.c_str(), 1);
+    std::filesystem::remove_all(m_path);
+  }
+  bool empty() const { return std::filesystem::is_empty(m_path); }
+
+ private:
+  std::string m_path, m_before;
+};
+
+// Every triangle of a sphere with three points of its own, and a triangle that joining the points
+// flattens: streamed at its full size in two cells, it is the sphere again, vertex for vertex.
+TEST(StreamedRun, JoinsEqualPointsAndDropsTheTrianglesTheyFlatten) {
+  const Mesh sphere = loop_sphere(2);
+  const Vector_source shared = source_of(sphere);
+  Vector_source source;
+  for (const auto& t : shared.triangles) {
+    const std::uint32_t first = std::uint32_t(source.points.size());
+    for (const std::uint32_t v : t) source.points.push_back(shared.points[v]);
+    source.triangles.push_back({first, first + 1, first + 2});
+  }
+  std::uint32_t copy = 3;  // another copy of point 0
+  while (source.points[copy] != source.points[0]) ++copy;
+  source.triangles.push_back({0, 1, copy});
+  const Temporary_folder folder;
+  cgal_policies::Simplification_options options = policy_alone("flat-lt", 1000);
+  options.parts = 2;
+  Mesh mesh;
+  const cgal_policies::Simplification_report report =
+      apps::Pipeline(options).run_streamed(source, mesh);
+  EXPECT_EQ(report.input_faces, sphere.number_of_faces());
+  EXPECT_EQ(report.input_vertices, sphere.number_of_vertices());
+  EXPECT_EQ(report.parts, 2u);
+  EXPECT_EQ(mesh.number_of_faces(), sphere.number_of_faces());
+  EXPECT_EQ(mesh.number_of_vertices(), sphere.number_of_vertices());
+  std::multiset<std::array<double, 3>> expected(shared.points.begin(), shared.points.end()), got;
+  for (const auto v : mesh.vertices())
+    got.insert({mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()});
+  EXPECT_EQ(got, expected);
+  const apps::Mesh_validity validity = apps::check_mesh_validity(mesh);
+  EXPECT_TRUE(validity.valid);
+  EXPECT_TRUE(validity.closed);
+  EXPECT_TRUE(folder.empty());
+}
+
+// A source that fails while the triangles are being spilled: the error reaches the caller and the
+// spill files are gone.
+TEST(StreamedRun, LeavesNoTemporaryFileWhenTheSourceFails) {
+  Vector_source source = source_of(loop_sphere(2));
+  source.failing_pass = 1;  // the second pass over the triangles: the cut
+  const Temporary_folder folder;
+  cgal_policies::Simplification_options options = policy_alone("fast", 100);
+  options.parts = 4;
+  Mesh mesh;
+  EXPECT_THROW(apps::Pipeline(options).run_streamed(source, mesh), std::runtime_error);
+  EXPECT_EQ(source.passes, 2);
+  EXPECT_TRUE(folder.empty());
+}
+
+// The bunny streamed in four cells with the fit: what a partitioned run keeps (a valid output at
+// the target, closed and of the input's Euler characteristic), its mean error within 3% of the
+// partitioned run of the mesh in memory, the same bytes on one thread and on two, and no spill
+// file left.
+TEST(StreamedRun, KeepsWhatAPartitionedRunKeepsOnTheBunny) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const Mesh input = apps::read_triangle_mesh(data_file("bunny.obj"));
+  const apps::Mesh_validity before = apps::check_mesh_validity(input);
+  const std::size_t target = input.number_of_faces() / 20;
+  cgal_policies::Simplification_options options = policy_alone("flat-lt", target);
+  options.parts = 4;
+  options.fit = true;
+  Mesh in_memory = input;
+  apps::Pipeline(options).run(in_memory);
+  const Vector_source source = source_of(input);
+  const Temporary_folder folder;
+  std::string bytes[2];
+  for (const std::size_t threads : {1, 2}) {
+    options.threads = threads;
+    Mesh mesh;
+    const cgal_policies::Simplification_report report =
+        apps::Pipeline(options).run_streamed(source, mesh);
+    EXPECT_EQ(report.parts, 4u);
+    EXPECT_TRUE(report.fitted);
+    EXPECT_EQ(report.input_faces, input.number_of_faces());
+    EXPECT_LE(mesh.number_of_faces(), target);
+    EXPECT_GE(mesh.number_of_faces() + 2, target);
+    const apps::Mesh_validity after = apps::check_mesh_validity(mesh);
+    EXPECT_TRUE(after.valid);
+    EXPECT_EQ(after.non_manifold_vertices, 0u);
+    EXPECT_EQ(after.closed, before.closed);
+    EXPECT_EQ(after.euler_characteristic, before.euler_characteristic);
+    EXPECT_LT(mean_error(input, mesh), 1.03 * mean_error(input, in_memory));
+    bytes[threads - 1] = written_bytes(mesh, "streamed" + std::to_string(threads));
+  }
+  EXPECT_FALSE(bytes[0].empty());
+  EXPECT_TRUE(bytes[0] == bytes[1]) << "one thread and two wrote different files";
+  EXPECT_TRUE(folder.empty());
 }
 
 }  // namespace
