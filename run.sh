@@ -7,7 +7,8 @@ cd "$(dirname "$0")"
 # Required to build and test; the second list enables the optional features (viewer, benchmark
 # peers and plots), which CI tests too.
 required=(g++ make cmake libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev libgtest-dev
-          clang-format libtinygltf-dev nlohmann-json3-dev libtbb-dev libmeshoptimizer-dev)
+          clang-format libtinygltf-dev nlohmann-json3-dev libtbb-dev libmeshoptimizer-dev
+          libdraco-dev)
 optional=(libopenmesh-dev gnuplot-nox pkg-config libglfw3-dev libimgui-dev libosmesa6-dev libgl-dev
           libstb-dev python3-dev python3-pybind11 python3-numpy python3-pytest)
 

@@ -3,6 +3,7 @@
 #include "Io_error.h"
 #include "Wedge_mesh.h"
 #include "glb_chunks.h"
+#include "gltf_draco.h"
 #include "gltf_meshopt.h"
 
 #include <tiny_gltf.h>
@@ -55,8 +56,9 @@ std::array<double, 2> texture_coordinates_of_gltf(double u, double v) { return {
 // ---- Reading ---------------------------------------------------------------------------------
 
 // The extensions the reader decodes into plain geometry and texture coordinates.
-const std::array<std::string, 3> kDecodedExtensions = {
-    "KHR_mesh_quantization", "EXT_meshopt_compression", "KHR_texture_transform"};
+const std::array<std::string, 4> kDecodedExtensions = {
+    "KHR_mesh_quantization", "EXT_meshopt_compression", "KHR_draco_mesh_compression",
+    "KHR_texture_transform"};
 
 using Matrix = std::array<double, 16>;  // column-major, as glTF stores it
 constexpr Matrix kIdentity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
@@ -646,8 +648,10 @@ Gltf_soup read_gltf(const std::string& path, bool binary) {
   try {
     std::ifstream file(path, std::ios::binary);
     if (!file) fail(path, "cannot open");
-    const std::string bytes = with_loadable_fallback_buffers(
-        std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()),
+    const std::string bytes = with_loadable_draco_indices(
+        with_loadable_fallback_buffers(
+            std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()),
+            binary),
         binary);
     if (binary) check_glb_chunks(path, bytes);
     if (bytes.size() > std::numeric_limits<unsigned>::max())
@@ -674,6 +678,7 @@ Gltf_soup read_gltf(const std::string& path, bool binary) {
       fail(path, "requires the extension " + extension + ", which this reader does not support");
 
   decode_meshopt_views(path, model);
+  decode_draco_primitives(path, model);
   Soup_builder builder(path, model);
   for (const Placed_mesh& placed : placed_meshes(path, model)) {
     if (placed.mesh < 0 || std::size_t(placed.mesh) >= model.meshes.size())

@@ -30,14 +30,15 @@ struct Gltf_soup {
 // top, glTF's origin, made 1 - v, from its bottom as in OBJ and PLY; the base colour texture's
 // KHR_texture_transform applied) and COLOR_0 (RGB, alpha 1, or RGBA; the same types), and each
 // primitive its material (names: the material's name, or "material_<i>" when it has none).
-// KHR_mesh_quantization's integer positions, normals and texture coordinates, sparse accessors
-// and EXT_meshopt_compression's views (gltf_meshopt.h) are read as their values; TEXCOORD_1,
-// skins and morph targets are skipped. The points are joined where exactly equal
-// (join_equal_points), so that the vertices a UV seam or a primitive boundary splits become one
-// vertex whose corners disagree. Throws Io_error (unreadable input, "<path>: <cause>") for a file
-// tinygltf cannot load (malformed JSON or GLB, a buffer file missing), a required extension other
-// than those three and KHR_texture_transform, an accessor or index out of range, a position,
-// normal, texture coordinate or colour that is not finite.
+// KHR_mesh_quantization's integer positions, normals and texture coordinates, sparse accessors,
+// EXT_meshopt_compression's views (gltf_meshopt.h) and KHR_draco_mesh_compression's primitives
+// (gltf_draco.h) are read as their values; TEXCOORD_1, skins and morph targets are skipped. The
+// points are joined where exactly equal (join_equal_points), so that the vertices a UV seam or a
+// primitive boundary splits become one vertex whose corners disagree. Throws Io_error (unreadable
+// input, "<path>: <cause>") for a file tinygltf cannot load (malformed JSON or GLB, a buffer file
+// missing), a required extension other than those three and KHR_texture_transform, compressed
+// data that do not decode, an accessor or index out of range, a position, normal, texture
+// coordinate or colour that is not finite.
 Gltf_soup read_gltf(const std::string& path, bool binary);
 
 // The bytes of a glTF file (GLB when `binary`) of `mesh`: one vertex per wedge (Wedge_mesh.h),

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace cgal_policies {
@@ -75,36 +76,21 @@ std::vector<unsigned char> decoded(const std::string& path, const tinygltf::Mode
 
 std::string with_loadable_fallback_buffers(std::string bytes, bool binary) {
   if (bytes.find("\"fallback\"") == std::string::npos) return bytes;
-  // A GLB: a 12-byte header, then the JSON chunk (length, type, text), then the rest.
-  std::size_t json_begin = 0, json_size = bytes.size();
-  if (binary) {
-    if (bytes.size() < 20) return bytes;
-    json_begin = 20;
-    json_size = glb_word(bytes, 12);
-    if (json_size > bytes.size() - json_begin) return bytes;
-  }
-  nlohmann::json gltf =
-      nlohmann::json::parse(bytes.begin() + std::ptrdiff_t(json_begin),
-                            bytes.begin() + std::ptrdiff_t(json_begin + json_size), nullptr, false);
-  if (!gltf.is_object() || !gltf.contains("buffers") || !gltf["buffers"].is_array()) return bytes;
-  for (nlohmann::json& buffer : gltf["buffers"]) {
-    const nlohmann::json* fallback =
-        buffer.is_object() && buffer.contains("extensions") ? &buffer["extensions"] : nullptr;
-    if (!fallback || !fallback->is_object() || !fallback->contains("EXT_meshopt_compression") ||
-        (*fallback)["EXT_meshopt_compression"].value("fallback", false) != true)
-      continue;
-    buffer["uri"] = "data:application/octet-stream;base64,AAAAAA==";
-    buffer["byteLength"] = 4;
-  }
-  std::string text = gltf.dump();
-  if (!binary) return text;
-  text.resize((text.size() + 3) / 4 * 4, ' ');
-  std::string glb = bytes.substr(0, 8);
-  const std::string rest = bytes.substr(json_begin + json_size);
-  append_glb_word(glb, std::uint32_t(20 + text.size() + rest.size()));
-  append_glb_word(glb, std::uint32_t(text.size()));
-  glb += bytes.substr(16, 4);  // "JSON"
-  return glb + text + rest;
+  return with_edited_json(std::move(bytes), binary, [](nlohmann::json& gltf) {
+    if (!gltf.contains("buffers") || !gltf["buffers"].is_array()) return false;
+    bool edited = false;
+    for (nlohmann::json& buffer : gltf["buffers"]) {
+      const nlohmann::json* fallback =
+          buffer.is_object() && buffer.contains("extensions") ? &buffer["extensions"] : nullptr;
+      if (!fallback || !fallback->is_object() || !fallback->contains("EXT_meshopt_compression") ||
+          (*fallback)["EXT_meshopt_compression"].value("fallback", false) != true)
+        continue;
+      buffer["uri"] = "data:application/octet-stream;base64,AAAAAA==";
+      buffer["byteLength"] = 4;
+      edited = true;
+    }
+    return edited;
+  });
 }
 
 void decode_meshopt_views(const std::string& path, tinygltf::Model& model) {

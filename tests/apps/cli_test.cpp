@@ -1028,6 +1028,14 @@ TEST_F(Cli, BadGltfIsOneBadInputLineAndNoOutput) {
   const std::uint32_t overrun_length = std::uint32_t(overrun.size());
   overrun.replace(8, 4, reinterpret_cast<const char*>(&overrun_length), 4);
   write("chunk_overrun.glb", overrun);
+  // gltf-pipeline's Draco file (tests/apps/draco), its compressed view cut from 6,799 bytes to
+  // 100 (the JSON keeps its length: a space pads the number).
+  std::string draco =
+      read_text(fs::path(CGAL_POLICIES_SOURCE_DIR) / "tests/apps/draco/bob_draco.glb");
+  const std::size_t view_length = draco.find("\"byteLength\":6799}");
+  ASSERT_NE(view_length, std::string::npos);
+  draco.replace(view_length, 18, "\"byteLength\":100 }");
+  write("truncated_draco.glb", draco);
   write("malformed.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [");
   write("missing_buffer.gltf",
         "{\"asset\": {\"version\": \"2.0\"}, \"buffers\": [{\"uri\": \"gone.bin\", "
@@ -1041,6 +1049,8 @@ TEST_F(Cli, BadGltfIsOneBadInputLineAndNoOutput) {
       {"cycle.glb", "the node hierarchy has a cycle"},
       {"truncated.glb", "cannot parse: "},
       {"chunk_overrun.glb", "cannot parse: the GLB chunk at byte "},
+      {"truncated_draco.glb",
+       "mesh 0 primitive 0: its Draco data do not decode (Failed to decode geometry data.)"},
       {"malformed.gltf", "cannot parse: "},
       {"missing_buffer.gltf", "cannot parse: "}};
   for (const auto& [name, cause] : causes) {
