@@ -27,6 +27,19 @@ install_missing() {
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
 }
 
+# The test gltf_validator's Khronos glTF-Validator, pinned, and node to run it: Debian's nodejs
+# and npm, unless node and npm are there already (NodeSource's nodejs holds its own npm and
+# conflicts with Debian's). npm installs the validator once, in build/tools, where the test looks;
+# without it (no network) the test is skipped.
+validator=gltf-validator@2.0.0-dev.3.10
+install_validator() {
+  command -v node >/dev/null && command -v npm >/dev/null || install_missing nodejs npm
+  grep -qs '"version": "'"${validator#*@}"'"' build/tools/node_modules/gltf-validator/package.json &&
+    return
+  npm install --prefix build/tools --no-audit --no-fund "$validator" >&2 ||
+    echo "run.sh: $validator not installed: the test gltf_validator will be skipped" >&2
+}
+
 # Builds the given targets (everything when none is given).
 build() {
   install_missing
@@ -70,6 +83,7 @@ case "${1:-}" in
     ;;
   test)
     build
+    install_validator
     ctest --test-dir build --output-on-failure -j "$(nproc)"
     ;;
   build)

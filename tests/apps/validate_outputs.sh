@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# The ctest test gltf_validator: simplify writes each shipped textured mesh, the vertex-colour PLY
+# and glTF files other tools made (gltfpack, gltf-pipeline's Draco) as .glb and .gltf, then bob
+# with its texture embedded, and the Khronos glTF-Validator (validate_gltf.mjs) must find no
+# error in any of them; its warnings are printed. Exits 77, which ctest counts as skipped, without node or the validator, and in CI's
+# sanitized pass (CGAL_POLICIES_SKIP_REAL_MESHES: the Release pass runs the real meshes).
+#
+#   validate_outputs.sh SIMPLIFY SOURCE_DIR NODE_MODULES WORK_DIR
+set -euo pipefail
+[ $# -eq 4 ] || { echo "usage: validate_outputs.sh SIMPLIFY SOURCE_DIR NODE_MODULES WORK_DIR" >&2; exit 2; }
+simplify=$1 source=$2 modules=$3 work=$4
+if [ -n "${CGAL_POLICIES_SKIP_REAL_MESHES+set}" ]; then
+  echo "skipped: CGAL_POLICIES_SKIP_REAL_MESHES is set: real meshes run in Release only"
+  exit 77
+fi
+if ! command -v node >/dev/null || [ ! -f "$modules/gltf-validator/package.json" ]; then
+  echo "skipped: needs node and gltf-validator in $modules (./run.sh test installs both)"
+  exit 77
+fi
+rm -rf "$work"
+mkdir -p "$work"
+outputs=()
+for input in data/spot.obj data/bob_tri.obj data/spot_colors.ply \
+             tests/apps/gltfpack/grid_quantized.glb tests/apps/draco/bob_draco.glb; do
+  name=$(basename "${input%.*}")
+  for extension in glb gltf; do
+    "$simplify" "$source/$input" "$work/$name.$extension" 0.5 --quiet
+    outputs+=("$work/$name.$extension")
+  done
+done
+# bob's output with bob's texture embedded (a data URI), simplified again: the image is written
+# into the GLB's buffer, and into the .gltf's.
+node -e 'const fs = require("fs"), [gltf, png, out] = process.argv.slice(1);
+  const g = JSON.parse(fs.readFileSync(gltf));
+  g.images = [{uri: "data:image/png;base64," + fs.readFileSync(png).toString("base64")}];
+  g.textures = [{source: 0}];
+  g.materials[0].pbrMetallicRoughness = {baseColorTexture: {index: 0}};
+  fs.writeFileSync(out, JSON.stringify(g));' \
+  "$work/bob_tri.gltf" "$source/data/bob_diffuse.png" "$work/bob_textured_input.gltf"
+for extension in glb gltf; do
+  "$simplify" "$work/bob_textured_input.gltf" "$work/bob_textured.$extension" 0.5 --quiet
+  outputs+=("$work/bob_textured.$extension")
+done
+node "$(dirname "$0")/validate_gltf.mjs" --modules "$modules" "${outputs[@]}"
