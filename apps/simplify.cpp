@@ -14,6 +14,7 @@
 #include "evaluation/mesh_validity.h"
 #include "evaluation/surface_error.h"
 #include "io/Removed_on_interrupt.h"
+#include "io/Streamed_mesh_file.h"
 #include "io/atomic_write.h"
 #include "io/mesh_io.h"
 #include "pipeline/Pipeline.h"
@@ -59,6 +60,12 @@ void print_help() {
          "                        1: none. Not with --max-error or hausdorff\n"
          "  --threads N           cores for the cells, 0: all (default); the output is the same\n"
          "                        for every N\n"
+         "  --out-of-core         never hold IN whole (binary PLY or OBJ): read it in passes,\n"
+         "                        spill each cell's triangles to a temporary file, and\n"
+         "                        simplify cell by cell (docs/scale.md); IN's equal points are\n"
+         "                        joined and its attributes dropped. Not with --max-error,\n"
+         "                        hausdorff, --merge-distance, --min-component, --measure or\n"
+         "                        --snapshot\n"
          "  --drop-small-pieces   when no collapse is left short of the target, drop the\n"
          "                        smallest connected components whole, smallest first, until\n"
          "                        it is met; never the largest\n"
@@ -143,32 +150,44 @@ int run(int argc, char** argv) {
   const std::string& output = request.output;
   const bool quiet = request.quiet, measure = request.measure;
 
-  Read_report read_report;
-  const Stopwatch reading;
-  // Only an OBJ, PLY or glTF output can hold texture coordinates, normals and colours.
-  Mesh mesh = read_triangle_mesh(input, &read_report,
-                                 writes_corner_attributes(output) ? Corner_attribute_reading::keep
-                                                                  : Corner_attribute_reading::drop);
-  const double read_seconds = reading.seconds();
-  if (!quiet)
-    for (const std::string& repair : read_report.repairs)
-      std::cerr << "simplify: " << input << ": " << repair << '\n';
-  // Before any work: a texture the picture needs and cannot read is bad input.
-  if (snapshot) snapshot->renderer->prepare(mesh, read_report.materials);
-  const bool input_had_corner_values =
-      cgal_policies::Corner_attributes<Point>(mesh).any_corner_values();
-  const std::size_t input_faces = mesh.number_of_faces();
   const cgal_policies::Simplification_options& options = request.options;
-  const Mesh original =
-      measure || snapshot || options.fit || options.smoothing.bounded ? mesh : Mesh();
-  cgal_policies::Simplification_report run;
-  {
-    Progress_bar bar(input_faces, options.target.of(input_faces), !quiet);
+  // The pipeline with a progress bar from `start` faces.
+  const auto run_with_bar = [&](std::size_t start, const auto& run_pipeline) {
+    Progress_bar bar(start, options.target.of(start), !quiet && start > 0);
     cgal_policies::Simplification_options with_bar = options;
     with_bar.progress = [&bar](cgal_policies::Simplification_pass pass, double, std::size_t faces) {
       if (pass == cgal_policies::Simplification_pass::simplification) bar.update(faces);
     };
-    run = Pipeline(with_bar).run(mesh, original);
+    return run_pipeline(Pipeline(with_bar));
+  };
+  Read_report read_report;
+  Mesh mesh, original;
+  bool input_had_corner_values = false;
+  double read_seconds = 0;  // out of core, the reading is the simplification pass's
+  cgal_policies::Simplification_report run;
+  if (request.out_of_core) {
+    if (snapshot)
+      throw App_error(exit_usage, "--snapshot draws IN whole, which --out-of-core never holds");
+    const Streamed_mesh_file source(input);
+    run = run_with_bar(source.declared_faces(), [&](const Pipeline& pipeline) {
+      return pipeline.run_streamed(source, mesh);
+    });
+  } else {
+    const Stopwatch reading;
+    // Only an OBJ, PLY or glTF output can hold texture coordinates, normals and colours.
+    mesh = read_triangle_mesh(input, &read_report,
+                              writes_corner_attributes(output) ? Corner_attribute_reading::keep
+                                                               : Corner_attribute_reading::drop);
+    read_seconds = reading.seconds();
+    if (!quiet)
+      for (const std::string& repair : read_report.repairs)
+        std::cerr << "simplify: " << input << ": " << repair << '\n';
+    // Before any work: a texture the picture needs and cannot read is bad input.
+    if (snapshot) snapshot->renderer->prepare(mesh, read_report.materials);
+    input_had_corner_values = cgal_policies::Corner_attributes<Point>(mesh).any_corner_values();
+    if (measure || snapshot || options.fit || options.smoothing.bounded) original = mesh;
+    run = run_with_bar(mesh.number_of_faces(),
+                       [&](const Pipeline& pipeline) { return pipeline.run(mesh, original); });
   }
   const std::string name = pipeline_name(options);
   const Stopwatch writing;

@@ -55,6 +55,15 @@ Simplify_request take_simplify_request(Command_line& cli) {
   request.measure = cli.take_flag("measure");
   request.force = cli.take_flag("force");
   request.quiet = cli.take_flag("quiet");
+  request.out_of_core = cli.take_flag("out-of-core");
+  const cgal_policies::Simplification_options& options = request.options;
+  if (request.out_of_core &&
+      (options.two_sided_bound() > 0 || options.merge_distance > 0 || options.min_component > 1 ||
+       options.smoothing.bounded || request.measure))
+    throw App_error(exit_usage,
+                    "--out-of-core never holds IN whole, which --max-error, the hausdorff "
+                    "policy, --merge-distance, --min-component, --smooth-bounded and --measure "
+                    "need");
   const std::vector<std::string> args = cli.positionals();
   if (args.size() < 2 || args.size() > 3)
     throw App_error(exit_usage, "usage: simplify IN OUT [RATIO] [options] (see --help)");

@@ -32,6 +32,7 @@ struct Simplify_request {
   const Policy_entry* policy = nullptr;  // options.policy's entry
   std::optional<std::size_t> samples;    // --samples of --measure
   bool json = false, measure = false, force = false, quiet = false;
+  bool out_of_core = false;  // read IN in passes (run_streamed), never whole
   std::string input, output;
 };
 

@@ -1,6 +1,7 @@
 #include "soup_readers.h"
 
 #include "Io_error.h"
+#include "ply_header.h"
 
 #include <algorithm>
 #include <charconv>
@@ -338,16 +339,6 @@ double decode_as(const unsigned char* raw) {
   return double(value);
 }
 
-// A scalar type of PLY: its two names in headers, its size in a binary body, and its decoder
-// (from the file's bytes in the machine's order); doubles hold every value of each exactly.
-struct Ply_type {
-  const char* name;
-  const char* sized_name;
-  std::size_t size;
-  double (*decode)(const unsigned char*);
-  double full_intensity;  // the value of a colour channel at its brightest
-};
-
 template <typename T>
 constexpr double largest() {
   return double(std::numeric_limits<T>::max());
@@ -370,27 +361,10 @@ const Ply_type* ply_type(std::string_view name) {
   return nullptr;
 }
 
-struct Ply_property {
-  std::string name;
-  const Ply_type* type = nullptr;
-  const Ply_type* count_type = nullptr;  // set for a list, whose items are of `type`
-};
+}  // namespace
 
-struct Ply_element {
-  std::string name;
-  std::size_t count = 0;
-  std::vector<Ply_property> properties;
-};
-
-enum class Ply_format { ascii, little_endian, big_endian };
-
-struct Ply_header {
-  Ply_format format = Ply_format::ascii;
-  std::vector<Ply_element> elements;
-  std::size_t body = 0;  // where the data starts
-};
-
-Ply_header parse_ply_header(const std::string& source, std::string_view bytes) {
+Ply_header parse_ply_header(const std::string& source, std::string_view bytes,
+                            std::size_t file_size) {
   if (bytes.substr(0, 4) != "ply\n" && bytes.substr(0, 5) != "ply\r\n")
     fail(source, "not a PLY file (it does not start with 'ply')");
   Ply_header header;
@@ -422,7 +396,7 @@ Ply_header parse_ply_header(const std::string& source, std::string_view bytes) {
       const std::optional<std::size_t> count = number_of<std::size_t>(tokens.next());
       if (element.name.empty() || !count) fail(source, where + "expected 'element NAME COUNT'");
       // Each element takes at least one byte of the body.
-      if (*count > bytes.size()) fail(source, where + "declares more elements than the file holds");
+      if (*count > file_size) fail(source, where + "declares more elements than the file holds");
       element.count = *count;
       header.elements.push_back(std::move(element));
     } else if (keyword == "property") {
@@ -447,6 +421,8 @@ Ply_header parse_ply_header(const std::string& source, std::string_view bytes) {
   header.body = at;
   return header;
 }
+
+namespace {
 
 // The values of a PLY body, one by one, in either encoding; all of them are read as doubles,
 // which hold every PLY integer exactly.
@@ -507,7 +483,7 @@ void add_strip_triangles(const std::vector<double>& strip, Polygon_soup& soup) {
 }  // namespace
 
 Polygon_soup parse_ply(const std::string& source, std::string_view bytes) {
-  const Ply_header header = parse_ply_header(source, bytes);
+  const Ply_header header = parse_ply_header(source, bytes, bytes.size());
   Ply_values values(source, bytes.substr(header.body), header.format);
   Polygon_soup soup;
   bool has_points = false, has_faces = false;

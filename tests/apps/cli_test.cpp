@@ -37,6 +37,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -1059,6 +1060,104 @@ TEST_F(Cli, BadGltfIsOneBadInputLineAndNoOutput) {
                    file(name), out);
     EXPECT_EQ(read_text(file("stderr")).find("simplify: " + file(name).string() + ": " + cause), 0u)
         << read_text(file("stderr"));
+  }
+}
+
+// A sphere streamed in two cells from a binary PLY (with a property besides x, y and z) and from an
+// OBJ (texture coordinates on its corners, indices counted back from the last vertex): the same
+// output from both, at the target, closed, and no spill file left in TMPDIR.
+TEST_F(Cli, OutOfCoreReadsBinaryPlyAndObjAlike) {
+  const Mesh sphere = test_meshes::loop_sphere(2);
+  std::string ply = "ply\nformat binary_little_endian 1.0\nelement vertex " +
+                    std::to_string(sphere.number_of_vertices()) +
+                    "\nproperty float x\nproperty float y\nproperty float z\n"
+                    "property float confidence\nelement face " +
+                    std::to_string(sphere.number_of_faces()) +
+                    "\nproperty list uchar int vertex_indices\nend_header\n";
+  std::string obj = "vt 0.5 0.5\n";
+  const auto append = [&ply](const auto value) {
+    ply.append(reinterpret_cast<const char*>(&value), sizeof value);
+  };
+  for (const auto v : sphere.vertices()) {
+    const apps::Point& p = sphere.point(v);
+    for (const double c : {p.x(), p.y(), p.z(), 1.0}) append(float(c));
+    char line[96];  // each float exactly, as the PLY holds it
+    std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", double(float(p.x())),
+                  double(float(p.y())), double(float(p.z())));
+    obj += line;
+  }
+  const int vertices = int(sphere.number_of_vertices());
+  for (const auto f : sphere.faces()) {
+    append(std::uint8_t(3));
+    obj += "f";
+    for (const auto v : CGAL::vertices_around_face(sphere.halfedge(f), sphere)) {
+      append(std::int32_t(v));
+      obj += " " + std::to_string(int(v) - vertices) + "/1";
+    }
+    obj += "\n";
+  }
+  const fs::path spill = file("spill");
+  fs::create_directories(spill);
+  ::setenv("TMPDIR", spill.c_str(), 1);
+  std::string outputs[2];
+  for (const std::string name : {"sphere.ply", "sphere.obj"}) {
+    const fs::path in = write(name, name == "sphere.ply" ? ply : obj),
+                   out = file(name + ".out.ply");
+    const Command_result r = run("simplify", in.string() + " " + out.string() +
+                                                 " 0.5 --out-of-core --policy fast --parts 2 "
+                                                 "--json --quiet");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(json_number(r.out, "input_faces"), 320) << r.out;
+    EXPECT_EQ(json_number(r.out, "output_faces"), 160) << r.out;
+    EXPECT_EQ(json_number(r.out, "parts"), 2) << r.out;
+    const apps::Mesh_validity validity =
+        apps::check_mesh_validity(apps::read_triangle_mesh(out.string()));
+    EXPECT_TRUE(validity.valid);
+    EXPECT_TRUE(validity.closed);
+    outputs[name == "sphere.obj"] = read_text(out);
+  }
+  ::unsetenv("TMPDIR");
+  EXPECT_TRUE(outputs[0].substr(outputs[0].find("end_header")) ==
+              outputs[1].substr(outputs[1].find("end_header")))
+      << "the PLY and the OBJ gave different outputs";
+  EXPECT_TRUE(fs::is_empty(spill));
+}
+
+// What --out-of-core cannot read is one bad-input line naming the file, and what it cannot do
+// with the input never whole, a usage error.
+TEST_F(Cli, OutOfCoreRefusesWhatItCannotStream) {
+  const fs::path out = file("out.ply");
+  const std::string triangle_ply =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+      "property float y\nproperty float z\nelement face 1\n"
+      "property list uchar int vertex_indices\nend_header\n";
+  const std::map<std::string, std::pair<std::string, std::string>> cases = {
+      {"ascii.ply",
+       {"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+        "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+        "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+        "an ASCII PLY cannot be read out of core"}},
+      {"truncated.ply", {triangle_ply + std::string(20, '\0'), "truncated"}},
+      {"far.obj", {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", "line 4: '9' names no vertex"}},
+      {"tet.off", {kTetrahedronOff, "--out-of-core reads binary PLY and OBJ files only"}}};
+  for (const auto& [name, contents_and_cause] : cases) {
+    SCOPED_TRACE(name);
+    const fs::path in = write(name, contents_and_cause.first);
+    expect_failure(in.string() + " " + out.string() + " 0.5 --out-of-core", apps::exit_bad_input,
+                   in, out);
+    EXPECT_EQ(read_text(file("stderr"))
+                  .find("simplify: " + in.string() + ": " + contents_and_cause.second),
+              0u)
+        << read_text(file("stderr"));
+  }
+  const fs::path in = write("tet.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\n");
+  for (const char* option : {"--max-error 0.01", "--measure", "--min-component 5"}) {
+    SCOPED_TRACE(option);
+    const Command_result r =
+        run("simplify", in.string() + " " + out.string() + " 0.5 --out-of-core " + option);
+    EXPECT_EQ(r.exit_code, apps::exit_usage) << r.err;
+    EXPECT_NE(r.err.find("--out-of-core never holds IN whole"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out));
   }
 }
 

@@ -1,0 +1,309 @@
+#include "Streamed_mesh_file.h"
+
+#include "Io_error.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string_view>
+#include <vector>
+
+namespace cgal_policies {
+namespace io {
+namespace {
+
+[[noreturn]] void fail(const std::string& path, const std::string& cause) {
+  throw Io_error(Io_error::Kind::unreadable_input, path + ": " + cause);
+}
+
+// The bytes of a file from an offset on, through a buffer of a few MiB.
+class Buffered_bytes {
+ public:
+  Buffered_bytes(const std::string& path, std::size_t offset)
+      : m_path(path), m_file(std::fopen(path.c_str(), "rb"), &std::fclose) {
+    if (!m_file || std::fseek(m_file.get(), long(offset), SEEK_SET) != 0) fail(path, "cannot open");
+  }
+
+  // The next n bytes (n at most 8); the file must hold them.
+  const unsigned char* take(std::size_t n) {
+    if (m_end - m_at < n) refill();
+    if (m_end - m_at < n) fail(m_path, "truncated: the data ends before the header's elements");
+    const unsigned char* bytes = m_buffer.data() + m_at;
+    m_at += n;
+    return bytes;
+  }
+
+  void skip(std::size_t n) {
+    const std::size_t buffered = std::min(n, m_end - m_at);
+    m_at += buffered;
+    if (n > buffered && std::fseek(m_file.get(), long(n - buffered), SEEK_CUR) != 0)
+      fail(m_path, "truncated: the data ends before the header's elements");
+  }
+
+ private:
+  void refill() {
+    std::copy(m_buffer.begin() + std::ptrdiff_t(m_at), m_buffer.begin() + std::ptrdiff_t(m_end),
+              m_buffer.begin());
+    m_end -= m_at;
+    m_at = 0;
+    m_end += std::fread(m_buffer.data() + m_end, 1, m_buffer.size() - m_end, m_file.get());
+  }
+
+  std::string m_path;
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> m_file;
+  std::vector<unsigned char> m_buffer = std::vector<unsigned char>(std::size_t(4) << 20);
+  std::size_t m_at = 0, m_end = 0;
+};
+
+// The values of a binary PLY body, one at a time.
+class Ply_reader {
+ public:
+  Ply_reader(const std::string& path, const Ply_header& header)
+      : m_bytes(path, header.body), m_big_endian(header.format == Ply_format::big_endian) {}
+
+  double next(const Ply_type& type) {
+    unsigned char raw[8];
+    std::copy_n(m_bytes.take(type.size), type.size, raw);
+    if (m_big_endian) std::reverse(raw, raw + type.size);
+    return type.decode(raw);
+  }
+
+  // Reads a list's count, which must be a whole number of at most `most`.
+  std::size_t count(const std::string& path, const Ply_property& list, std::size_t most) {
+    const double n = next(*list.count_type);
+    if (!(n >= 0 && n <= double(most) && n == std::floor(n)))
+      fail(path, "a list count of " + std::to_string(n) + " is out of range");
+    return std::size_t(n);
+  }
+
+  void skip(const std::string& path, const Ply_property& property) {
+    if (property.count_type)
+      m_bytes.skip(count(path, property, std::size_t(1) << 30) * property.type->size);
+    else
+      m_bytes.skip(property.type->size);
+  }
+
+  void skip(const std::string& path, const Ply_element& element) {
+    const bool fixed = std::none_of(element.properties.begin(), element.properties.end(),
+                                    [](const Ply_property& p) { return p.count_type; });
+    if (!fixed) {
+      for (std::size_t row = 0; row < element.count; ++row)
+        for (const Ply_property& p : element.properties) skip(path, p);
+      return;
+    }
+    std::size_t row_size = 0;
+    for (const Ply_property& p : element.properties) row_size += p.type->size;
+    m_bytes.skip(element.count * row_size);
+  }
+
+ private:
+  Buffered_bytes m_bytes;
+  bool m_big_endian;
+};
+
+const Ply_element* find_element(const Ply_header& header, const char* name) {
+  for (const Ply_element& element : header.elements)
+    if (element.name == name) return &element;
+  return nullptr;
+}
+
+int scalar_slot(const Ply_element& element, std::string_view name) {
+  for (std::size_t p = 0; p < element.properties.size(); ++p)
+    if (element.properties[p].name == name && !element.properties[p].count_type) return int(p);
+  return -1;
+}
+
+int index_list_slot(const Ply_element& element) {
+  for (std::size_t p = 0; p < element.properties.size(); ++p) {
+    const Ply_property& property = element.properties[p];
+    if (property.count_type &&
+        (property.name == "vertex_indices" || property.name == "vertex_index"))
+      return int(p);
+  }
+  return -1;
+}
+
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+// The next token of `line` from `at` on, blanks skipped.
+std::string_view next_token(std::string_view line, std::size_t& at) {
+  while (at < line.size() && is_blank(line[at])) ++at;
+  const std::size_t start = at;
+  while (at < line.size() && !is_blank(line[at])) ++at;
+  return line.substr(start, at - start);
+}
+
+}  // namespace
+
+Streamed_mesh_file::Streamed_mesh_file(std::string path) : m_path(std::move(path)) {
+  std::ifstream file(m_path, std::ios::binary);
+  if (!file) fail(m_path, "cannot open");
+  std::string start(4, '\0');
+  file.read(start.data(), 4);
+  start.resize(std::size_t(file.gcount()));
+  std::string extension = std::filesystem::path(m_path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  if (start != "ply\n" && start != "ply\r") {
+    if (extension != ".obj") fail(m_path, "--out-of-core reads binary PLY and OBJ files only");
+    m_obj = true;
+    return;
+  }
+  // The header ends at end_header; a header longer than 1 MiB is no real one.
+  file.seekg(0);
+  std::string header;
+  for (std::string line; header.size() < (std::size_t(1) << 20) && std::getline(file, line);) {
+    header += line + '\n';
+    if (line.rfind("end_header", 0) == 0) break;
+  }
+  m_header = parse_ply_header(m_path, header, std::filesystem::file_size(m_path));
+  if (m_header.format == Ply_format::ascii)
+    fail(m_path, "an ASCII PLY cannot be read out of core; write it as binary PLY first");
+  const Ply_element* vertex = find_element(m_header, "vertex");
+  if (!vertex) fail(m_path, "no vertex element");
+  for (const char* axis : {"x", "y", "z"})
+    if (scalar_slot(*vertex, axis) < 0) fail(m_path, "the vertex element has no x, y and z");
+  const Ply_element* face = find_element(m_header, "face");
+  if (!face || index_list_slot(*face) < 0)
+    fail(m_path, "no faces (no face element with vertex_indices)");
+}
+
+std::size_t Streamed_mesh_file::declared_faces() const {
+  const Ply_element* face = m_obj ? nullptr : find_element(m_header, "face");
+  return face ? face->count : 0;
+}
+
+void Streamed_mesh_file::for_each_point(
+    const std::function<void(double, double, double)>& f) const {
+  m_points = 0;
+  const auto counted = [&](double x, double y, double z) {
+    if (!(std::isfinite(x) && std::isfinite(y) && std::isfinite(z)))
+      fail(m_path, "vertex " + std::to_string(m_points) + ": a coordinate is not finite");
+    ++m_points;
+    f(x, y, z);
+  };
+  if (m_obj) {
+    for_each_obj_line([&](std::size_t number, std::string_view line) {
+      std::size_t at = 0;
+      if (next_token(line, at) != "v") return;
+      double xyz[3];
+      for (double& c : xyz) {
+        const std::string_view token = next_token(line, at);
+        const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), c);
+        if (error != std::errc() || end != token.data() + token.size() || token.empty())
+          fail(m_path, "line " + std::to_string(number) + ": a vertex needs three numbers");
+      }
+      counted(xyz[0], xyz[1], xyz[2]);
+    });
+    return;
+  }
+  for_each_ply_point(counted);
+}
+
+void Streamed_mesh_file::for_each_triangle(
+    const std::function<void(std::uint32_t, std::uint32_t, std::uint32_t)>& f) const {
+  if (!m_obj) {
+    for_each_ply_triangle(f);
+    return;
+  }
+  std::size_t so_far = 0;  // the vertices before the line, which negative indices count back from
+  std::vector<std::uint32_t> polygon;
+  for_each_obj_line([&](std::size_t number, std::string_view line) {
+    std::size_t at = 0;
+    const std::string_view keyword = next_token(line, at);
+    if (keyword == "v") ++so_far;
+    if (keyword != "f") return;
+    polygon.clear();
+    for (std::string_view token = next_token(line, at); !token.empty();
+         token = next_token(line, at)) {
+      long long index = 0;
+      const char* end = token.data() + token.size();
+      const auto [stop, error] = std::from_chars(token.data(), end, index);
+      const long long first = index < 0 ? (long long)(so_far) + index : index - 1;
+      if (error != std::errc() || (stop != end && *stop != '/') || index == 0 || first < 0 ||
+          first >= (long long)(m_points))
+        fail(m_path, "line " + std::to_string(number) + ": '" + std::string(token.substr(0, 20)) +
+                         "' names no vertex");
+      polygon.push_back(std::uint32_t(first));
+    }
+    if (polygon.size() < 3)
+      fail(m_path, "line " + std::to_string(number) + ": a face needs at least three corners");
+    for (std::size_t k = 2; k < polygon.size(); ++k) f(polygon[0], polygon[k - 1], polygon[k]);
+  });
+}
+
+void Streamed_mesh_file::for_each_ply_point(
+    const std::function<void(double, double, double)>& f) const {
+  Ply_reader values(m_path, m_header);
+  for (const Ply_element& element : m_header.elements) {
+    if (element.name != "vertex") {
+      values.skip(m_path, element);
+      continue;
+    }
+    const int slot[3] = {scalar_slot(element, "x"), scalar_slot(element, "y"),
+                         scalar_slot(element, "z")};
+    for (std::size_t row = 0; row < element.count; ++row) {
+      double xyz[3] = {0, 0, 0};
+      for (std::size_t p = 0; p < element.properties.size(); ++p) {
+        const Ply_property& property = element.properties[p];
+        if (property.count_type) {
+          values.skip(m_path, property);
+          continue;
+        }
+        const double value = values.next(*property.type);
+        for (int axis = 0; axis < 3; ++axis)
+          if (slot[axis] == int(p)) xyz[axis] = value;
+      }
+      f(xyz[0], xyz[1], xyz[2]);
+    }
+    return;
+  }
+}
+
+void Streamed_mesh_file::for_each_ply_triangle(
+    const std::function<void(std::uint32_t, std::uint32_t, std::uint32_t)>& f) const {
+  Ply_reader values(m_path, m_header);
+  std::vector<std::uint32_t> polygon;
+  for (const Ply_element& element : m_header.elements) {
+    if (element.name != "face") {
+      values.skip(m_path, element);
+      continue;
+    }
+    const int indices = index_list_slot(element);
+    for (std::size_t row = 0; row < element.count; ++row)
+      for (std::size_t p = 0; p < element.properties.size(); ++p) {
+        const Ply_property& property = element.properties[p];
+        if (int(p) != indices) {
+          values.skip(m_path, property);
+          continue;
+        }
+        polygon.resize(values.count(m_path, property, std::size_t(1) << 20));
+        for (std::uint32_t& corner : polygon) {
+          const double index = values.next(*property.type);
+          if (!(index >= 0 && index < double(m_points) && index == std::floor(index)))
+            fail(m_path, "face " + std::to_string(row) + ": " + std::to_string(index) +
+                             " is not a vertex index");
+          corner = std::uint32_t(index);
+        }
+        if (polygon.size() < 3)
+          fail(m_path, "face " + std::to_string(row) + ": a face needs at least three corners");
+        for (std::size_t k = 2; k < polygon.size(); ++k) f(polygon[0], polygon[k - 1], polygon[k]);
+      }
+    return;
+  }
+}
+
+void Streamed_mesh_file::for_each_obj_line(
+    const std::function<void(std::size_t, std::string_view)>& f) const {
+  std::ifstream file(m_path, std::ios::binary);
+  if (!file) fail(m_path, "cannot open");
+  std::size_t number = 0;
+  for (std::string line; std::getline(file, line);) f(++number, line);
+}
+
+}  // namespace io
+}  // namespace cgal_policies

@@ -1,0 +1,56 @@
+#!/usr/bin/python3
+"""Writes N copies of a binary little-endian PLY of triangles (float x y z, uchar count and int
+indices) side by side in a grid, as one PLY, streaming: one copy in memory at a time. With
+split_in_four.py it makes the inputs of more than 100M faces of the scale benchmark from shipped
+data (docs/scale.md): the dragon split twice, in eight copies, is 111.5M faces.
+
+usage: scripts/tile_copies.py IN.ply OUT.ply N
+"""
+import math
+import sys
+
+import numpy as np
+
+
+def read_ply(path):
+    with open(path, "rb") as f:
+        data = f.read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    header = data[:end].decode("ascii").split("\n")
+    if "format binary_little_endian 1.0" not in header:
+        sys.exit(f"{path}: only binary little-endian PLY is tiled")
+    counts = {line.split()[1]: int(line.split()[2]) for line in header if line.startswith("element")}
+    vertex_count, face_count = counts["vertex"], counts["face"]
+    points = np.frombuffer(data, dtype="<f4", count=3 * vertex_count, offset=end)
+    faces = np.frombuffer(data, dtype=np.dtype([("n", "u1"), ("v", "<i4", 3)]), count=face_count,
+                          offset=end + 12 * vertex_count)
+    if np.any(faces["n"] != 3):
+        sys.exit(f"{path}: only triangles are tiled")
+    return points.reshape(-1, 3), faces
+
+
+def main():
+    if len(sys.argv) != 4 or not sys.argv[3].isdigit() or int(sys.argv[3]) < 1:
+        sys.exit("usage: scripts/tile_copies.py IN.ply OUT.ply N")
+    points, faces = read_ply(sys.argv[1])
+    copies = int(sys.argv[3])
+    side = math.ceil(math.sqrt(copies))
+    step = 1.1 * (points.max(axis=0) - points.min(axis=0))
+    with open(sys.argv[2], "wb") as out:
+        out.write(("ply\nformat binary_little_endian 1.0\n"
+                   f"comment {copies} copies of {sys.argv[1]} (scripts/tile_copies.py)\n"
+                   f"element vertex {copies * len(points)}\n"
+                   "property float x\nproperty float y\nproperty float z\n"
+                   f"element face {copies * len(faces)}\n"
+                   "property list uchar int vertex_indices\nend_header\n").encode("ascii"))
+        for c in range(copies):
+            offset = np.array([step[0] * (c % side), step[1] * (c // side), 0], dtype="<f4")
+            out.write((points + offset).astype("<f4").tobytes())
+        for c in range(copies):
+            moved = faces.copy()
+            moved["v"] += c * len(points)
+            out.write(moved.tobytes())
+
+
+if __name__ == "__main__":
+    main()
