@@ -172,6 +172,10 @@ int run(int argc, char** argv) {
     run = run_with_bar(source.declared_faces(), [&](const Pipeline& pipeline) {
       return pipeline.run_streamed(source, mesh);
     });
+    // As the reader of whole files says of a file without faces.
+    if (run.input_faces == 0)
+      throw Io_error(Io_error::Kind::unreadable_input,
+                     input + ": no faces (none, or none left once its equal points are joined)");
   } else {
     const Stopwatch reading;
     // Only an OBJ, PLY or glTF output can hold texture coordinates, normals and colours.

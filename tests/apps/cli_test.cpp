@@ -1139,6 +1139,7 @@ TEST_F(Cli, OutOfCoreRefusesWhatItCannotStream) {
         "an ASCII PLY cannot be read out of core"}},
       {"truncated.ply", {triangle_ply + std::string(20, '\0'), "truncated"}},
       {"far.obj", {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", "line 4: '9' names no vertex"}},
+      {"flat.obj", {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2\n", "no faces"}},
       {"tet.off", {kTetrahedronOff, "--out-of-core reads binary PLY and OBJ files only"}}};
   for (const auto& [name, contents_and_cause] : cases) {
     SCOPED_TRACE(name);
