@@ -109,28 +109,10 @@ class Simplification_pipeline {
       report.stop_reason = outcome->stop_reason;
       report.attributes_carried = outcome->attributes_carried;
     });
-    mesh.collect_garbage();
-    if (m_options.pass_done) m_options.pass_done(Simplification_pass::simplification);
-    // 4-6: after the run, unless it was interrupted.
-    if (m_options.drop_small_pieces && report.stop_reason == Stop_reason::no_collapse_left)
-      timed(report, Simplification_pass::pieces, [&] {
-        report.dropped_after = drop_smallest_components_until(mesh, report.target_faces);
-      });
-    if (m_options.smoothing.iterations > 0 && !interrupted(report))
-      timed(report, Simplification_pass::smoothing,
-            [&] { report.smoothing_refused_moves = smooth(mesh, input, report.bound); });
-    if (m_options.fit && !interrupted(report))
-      timed(report, Simplification_pass::fit, [&] {
-        Two_sided_fit_options fit = m_options.fit_options;
-        fit.max_normal_angle_deg = m_options.max_normal_angle_deg;
-        fit.tolerance = report.bound;
-        report.fit = report.parts > 1
-                         ? internal::fit_by_cells(mesh, input, *cells, m_options.threads, fit)
-                         : internal::fit_carrying_corner_values(mesh, input, fit);
-        report.fitted = true;
-      });
-    report.output_faces = mesh.number_of_faces();
-    report.output_vertices = mesh.number_of_vertices();
+    finish(report, mesh, input, [&](const Two_sided_fit_options& fit) {
+      return report.parts > 1 ? internal::fit_by_cells(mesh, input, *cells, m_options.threads, fit)
+                              : internal::fit_carrying_corner_values(mesh, input, fit);
+    });
     return report;
   }
 
@@ -175,33 +157,18 @@ class Simplification_pipeline {
         mesh);
     if (!outcome) throw std::logic_error("a part lost a vertex of its cut");
     report.stop_reason = outcome->stop_reason;
-    mesh.collect_garbage();
     report.pass_seconds[std::size_t(Simplification_pass::simplification)] =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (m_options.pass_done) m_options.pass_done(Simplification_pass::simplification);
-    if (m_options.drop_small_pieces && report.stop_reason == Stop_reason::no_collapse_left)
-      timed(report, Simplification_pass::pieces, [&] {
-        report.dropped_after = drop_smallest_components_until(mesh, report.target_faces);
-      });
-    if (m_options.smoothing.iterations > 0 && !interrupted(report))
-      timed(report, Simplification_pass::smoothing, [&] { smooth(mesh, Mesh(), 0); });
-    if (m_options.fit && !interrupted(report))
-      timed(report, Simplification_pass::fit, [&] {
-        Two_sided_fit_options fit = m_options.fit_options;
-        fit.max_normal_angle_deg = m_options.max_normal_angle_deg;
-        const internal::Spatial_cells shifted(input.sample, cells.size(),
-                                              internal::kShiftedQuantile);
-        std::optional<internal::Spill_files> shifted_spills;
-        report.fit = internal::fit_by_cells(
-            mesh, cells, shifted, m_options.threads, fit, [&](const internal::Spatial_cells& by) {
-              if (&by == &cells) return input_parts(spills);
-              internal::spill_again(input, spills, shifted, shifted_spills.emplace(cells.size()));
-              return input_parts(*shifted_spills);
-            });
-        report.fitted = true;
-      });
-    report.output_faces = mesh.number_of_faces();
-    report.output_vertices = mesh.number_of_vertices();
+    finish(report, mesh, Mesh(), [&](const Two_sided_fit_options& fit) {
+      const internal::Spatial_cells shifted(input.sample, cells.size(), internal::kShiftedQuantile);
+      std::optional<internal::Spill_files> shifted_spills;
+      return internal::fit_by_cells(
+          mesh, cells, shifted, m_options.threads, fit, [&](const internal::Spatial_cells& by) {
+            if (&by == &cells) return input_parts(spills);
+            internal::spill_again(input, spills, shifted, shifted_spills.emplace(cells.size()));
+            return input_parts(*shifted_spills);
+          });
+    });
     return report;
   }
 
@@ -216,6 +183,32 @@ class Simplification_pipeline {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (pass != Simplification_pass::simplification && m_options.pass_done)
       m_options.pass_done(pass);
+  }
+
+  // After the policy's pass: the garbage collected, then passes 4-6 unless the run was
+  // interrupted, fit_by(options) running the fit, and the output's counts.
+  template <class Fit>
+  void finish(Simplification_report& report, Mesh& mesh, const Mesh& input,
+              const Fit& fit_by) const {
+    mesh.collect_garbage();
+    if (m_options.pass_done) m_options.pass_done(Simplification_pass::simplification);
+    if (m_options.drop_small_pieces && report.stop_reason == Stop_reason::no_collapse_left)
+      timed(report, Simplification_pass::pieces, [&] {
+        report.dropped_after = drop_smallest_components_until(mesh, report.target_faces);
+      });
+    if (m_options.smoothing.iterations > 0 && !interrupted(report))
+      timed(report, Simplification_pass::smoothing,
+            [&] { report.smoothing_refused_moves = smooth(mesh, input, report.bound); });
+    if (m_options.fit && !interrupted(report))
+      timed(report, Simplification_pass::fit, [&] {
+        Two_sided_fit_options fit = m_options.fit_options;
+        fit.max_normal_angle_deg = m_options.max_normal_angle_deg;
+        fit.tolerance = report.bound;
+        report.fit = fit_by(fit);
+        report.fitted = true;
+      });
+    report.output_faces = mesh.number_of_faces();
+    report.output_vertices = mesh.number_of_vertices();
   }
 
   // Asks the callback between passes; an interrupted run reports it and skips the rest.

@@ -9,15 +9,29 @@ import struct
 import sys
 
 
-def read_ply(path):
+def read_body(path, verb):
+    """The bytes of a binary little-endian PLY, where its body starts, and its vertex and face
+    counts; `verb` says what this script does with it, for the error."""
     with open(path, "rb") as f:
         data = f.read()
     end = data.index(b"end_header\n") + len(b"end_header\n")
     header = data[:end].decode("ascii").split("\n")
     if "format binary_little_endian 1.0" not in header:
-        sys.exit(f"{path}: only binary little-endian PLY is split")
+        sys.exit(f"{path}: only binary little-endian PLY is {verb}")
     counts = {line.split()[1]: int(line.split()[2]) for line in header if line.startswith("element")}
-    vertex_count, face_count = counts["vertex"], counts["face"]
+    return data, end, counts["vertex"], counts["face"]
+
+
+def ply_header(vertex_count, face_count, comment=""):
+    """The header of a binary PLY of float x y z and uchar/int index lists."""
+    return (f"ply\nformat binary_little_endian 1.0\n{comment}element vertex {vertex_count}\n"
+            "property float x\nproperty float y\nproperty float z\n"
+            f"element face {face_count}\nproperty list uchar int vertex_indices\n"
+            "end_header\n").encode("ascii")
+
+
+def read_ply(path):
+    data, end, vertex_count, face_count = read_body(path, "split")
     points = list(struct.iter_unpack("<3f", data[end:end + 12 * vertex_count]))
     faces, at = [], end + 12 * vertex_count
     for _ in range(face_count):
@@ -48,10 +62,7 @@ def split(points, faces):
 
 def write_ply(path, points, faces):
     with open(path, "wb") as f:
-        f.write((f"ply\nformat binary_little_endian 1.0\nelement vertex {len(points)}\n"
-                 "property float x\nproperty float y\nproperty float z\n"
-                 f"element face {len(faces)}\nproperty list uchar int vertex_indices\n"
-                 "end_header\n").encode("ascii"))
+        f.write(ply_header(len(points), len(faces)))
         f.write(b"".join(struct.pack("<3f", *p) for p in points))
         f.write(b"".join(struct.pack("<B3i", 3, *t) for t in faces))
 

@@ -11,16 +11,11 @@ import sys
 
 import numpy as np
 
+from split_in_four import ply_header, read_body
+
 
 def read_ply(path):
-    with open(path, "rb") as f:
-        data = f.read()
-    end = data.index(b"end_header\n") + len(b"end_header\n")
-    header = data[:end].decode("ascii").split("\n")
-    if "format binary_little_endian 1.0" not in header:
-        sys.exit(f"{path}: only binary little-endian PLY is tiled")
-    counts = {line.split()[1]: int(line.split()[2]) for line in header if line.startswith("element")}
-    vertex_count, face_count = counts["vertex"], counts["face"]
+    data, end, vertex_count, face_count = read_body(path, "tiled")
     points = np.frombuffer(data, dtype="<f4", count=3 * vertex_count, offset=end)
     faces = np.frombuffer(data, dtype=np.dtype([("n", "u1"), ("v", "<i4", 3)]), count=face_count,
                           offset=end + 12 * vertex_count)
@@ -37,12 +32,8 @@ def main():
     side = math.ceil(math.sqrt(copies))
     step = 1.1 * (points.max(axis=0) - points.min(axis=0))
     with open(sys.argv[2], "wb") as out:
-        out.write(("ply\nformat binary_little_endian 1.0\n"
-                   f"comment {copies} copies of {sys.argv[1]} (scripts/tile_copies.py)\n"
-                   f"element vertex {copies * len(points)}\n"
-                   "property float x\nproperty float y\nproperty float z\n"
-                   f"element face {copies * len(faces)}\n"
-                   "property list uchar int vertex_indices\nend_header\n").encode("ascii"))
+        out.write(ply_header(copies * len(points), copies * len(faces),
+                             f"comment {copies} copies of {sys.argv[1]} (scripts/tile_copies.py)\n"))
         for c in range(copies):
             offset = np.array([step[0] * (c % side), step[1] * (c // side), 0], dtype="<f4")
             out.write((points + offset).astype("<f4").tobytes())

@@ -145,17 +145,8 @@ CGAL::Surface_mesh<Point> mesh_part(const CGAL::Surface_mesh<Point>& mesh,
   }
   Mesh part;
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, part);
-  auto lock =
-      part.template add_property_map<typename Mesh::Vertex_index, bool>(kLockedVertexMap, false)
-          .first;
-  auto origin =
-      part.template add_property_map<typename Mesh::Vertex_index, typename Mesh::Vertex_index>(
-              kOriginVertexMap)
-          .first;
-  for (const auto v : part.vertices()) {
-    origin[v] = mesh.target(Halfedge(starts[std::size_t(v)]));
-    lock[v] = locked(origin[v]);
-  }
+  add_part_vertex_maps(
+      part, [&](auto v) { return mesh.target(Halfedge(starts[std::size_t(v)])); }, locked);
   if (with_values)
     copy_corner_values(std::vector<const Mesh*>(corners.size(), &mesh), corners, polygons, part);
   return part;

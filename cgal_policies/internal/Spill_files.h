@@ -64,7 +64,6 @@ class Spill_files {
   }
 
   std::size_t size() const { return m_counts.size(); }
-  std::size_t triangles(std::size_t cell) const { return m_counts[cell]; }
 
   // The triangles of `cell`, in the order they were appended; after close().
   std::vector<Triangle> read(std::size_t cell) const {

@@ -185,17 +185,9 @@ CGAL::Surface_mesh<Point> streamed_part(const std::vector<Point>& points,
                                                      CGAL::parameters::visitor(visitor));
   Mesh part;
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(part_points, polygons, part);
-  auto lock =
-      part.template add_property_map<typename Mesh::Vertex_index, bool>(kLockedVertexMap, false)
-          .first;
-  auto origin_map =
-      part.template add_property_map<typename Mesh::Vertex_index, typename Mesh::Vertex_index>(
-              kOriginVertexMap)
-          .first;
-  for (const auto v : part.vertices()) {
-    origin_map[v] = typename Mesh::Vertex_index(origin[std::size_t(v)]);
-    lock[v] = vertex_cell[origin[std::size_t(v)]] == kCutCell;
-  }
+  add_part_vertex_maps(
+      part, [&](auto v) { return typename Mesh::Vertex_index(origin[std::size_t(v)]); },
+      [&](auto o) { return vertex_cell[std::size_t(o)] == kCutCell; });
   return part;
 }
 

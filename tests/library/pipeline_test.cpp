@@ -720,6 +720,19 @@ std::string written_bytes(const Mesh& mesh, const std::string& name) {
   return bytes;
 }
 
+// What a partitioned run keeps of an input that was `before`: within two faces under `target`,
+// valid and manifold, closed where the input is, of the same Euler characteristic.
+void expect_kept_as_a_partitioned_run_keeps(const Mesh& mesh, std::size_t target,
+                                            const apps::Mesh_validity& before) {
+  EXPECT_LE(mesh.number_of_faces(), target);
+  EXPECT_GE(mesh.number_of_faces() + 2, target);
+  const apps::Mesh_validity after = apps::check_mesh_validity(mesh);
+  EXPECT_TRUE(after.valid);
+  EXPECT_EQ(after.non_manifold_vertices, 0u);
+  EXPECT_EQ(after.closed, before.closed);
+  EXPECT_EQ(after.euler_characteristic, before.euler_characteristic);
+}
+
 // The bunny cut into four parts and simplified with each policy: a valid output at the target,
 // closed where the input is, its mean error within 3% of the whole run's, and the same bytes on
 // one thread and on two.
@@ -741,13 +754,7 @@ TEST_P(PartitionedRun, KeepsTheInvariantsAndGivesTheSameBytesOnAnyThreadCount) {
     const cgal_policies::Simplification_report report = apps::Pipeline(options).run(mesh);
     EXPECT_EQ(report.parts, 4u);
     EXPECT_EQ(report.stop_reason, cgal_policies::Stop_reason::target_reached);
-    EXPECT_LE(mesh.number_of_faces(), target);
-    EXPECT_GE(mesh.number_of_faces() + 2, target);
-    const apps::Mesh_validity after = apps::check_mesh_validity(mesh);
-    EXPECT_TRUE(after.valid);
-    EXPECT_EQ(after.non_manifold_vertices, 0u);
-    EXPECT_EQ(after.closed, before.closed);
-    EXPECT_EQ(after.euler_characteristic, before.euler_characteristic);
+    expect_kept_as_a_partitioned_run_keeps(mesh, target, before);
     EXPECT_LT(mean_error(input, mesh), 1.03 * mean_error(input, whole));
     bytes[threads - 1] = written_bytes(mesh, GetParam() + std::to_string(threads));
   }
@@ -946,13 +953,7 @@ TEST(StreamedRun, KeepsWhatAPartitionedRunKeepsOnTheBunny) {
     EXPECT_EQ(report.parts, 4u);
     EXPECT_TRUE(report.fitted);
     EXPECT_EQ(report.input_faces, input.number_of_faces());
-    EXPECT_LE(mesh.number_of_faces(), target);
-    EXPECT_GE(mesh.number_of_faces() + 2, target);
-    const apps::Mesh_validity after = apps::check_mesh_validity(mesh);
-    EXPECT_TRUE(after.valid);
-    EXPECT_EQ(after.non_manifold_vertices, 0u);
-    EXPECT_EQ(after.closed, before.closed);
-    EXPECT_EQ(after.euler_characteristic, before.euler_characteristic);
+    expect_kept_as_a_partitioned_run_keeps(mesh, target, before);
     EXPECT_LT(mean_error(input, mesh), 1.03 * mean_error(input, in_memory));
     bytes[threads - 1] = written_bytes(mesh, "streamed" + std::to_string(threads));
   }
