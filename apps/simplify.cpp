@@ -120,9 +120,12 @@ std::optional<Snapshot_request> take_snapshot_options(Command_line& cli) {
   return request;
 }
 
-void write_mesh_and_snapshot(const Mesh& original, const Mesh& simplified, const std::string& name,
-                             const std::optional<Snapshot_request>& snapshot,
-                             const std::string& output, const Material_references& materials) {
+// Returns what OUT was written without (write_mesh_atomically).
+std::vector<std::string> write_mesh_and_snapshot(const Mesh& original, const Mesh& simplified,
+                                                 const std::string& name,
+                                                 const std::optional<Snapshot_request>& snapshot,
+                                                 const std::string& output,
+                                                 const Material_references& materials) {
   // An interrupt before OUT is in place removes the new picture too.
   std::optional<Removed_on_interrupt> picture_without_mesh;
   if (snapshot) {
@@ -130,7 +133,7 @@ void write_mesh_and_snapshot(const Mesh& original, const Mesh& simplified, const
     picture_without_mesh.emplace(snapshot->png);
   }
   try {
-    write_mesh_atomically(simplified, output, materials);
+    return write_mesh_atomically(simplified, output, materials);
   } catch (...) {
     std::error_code ignored;
     if (snapshot) std::filesystem::remove(snapshot->png, ignored);
@@ -195,7 +198,10 @@ int run(int argc, char** argv) {
   }
   const std::string name = pipeline_name(options);
   const Stopwatch writing;
-  write_mesh_and_snapshot(original, mesh, name, snapshot, output, read_report.materials);
+  // Even with --quiet: OUT lacks something IN had.
+  for (const std::string& loss :
+       write_mesh_and_snapshot(original, mesh, name, snapshot, output, read_report.materials))
+    std::cerr << "simplify: warning: " << loss << '\n';
   const double write_seconds = writing.seconds();
 
   Json_object report;

@@ -5,6 +5,7 @@
 #include "glb_chunks.h"
 #include "gltf_draco.h"
 #include "gltf_meshopt.h"
+#include "obj_material_looks.h"
 
 #include <tiny_gltf.h>
 
@@ -617,8 +618,8 @@ int append_float_attribute(tinygltf::Model& model, std::vector<float> values, in
                          values.size() / components);
 }
 
-// The input's looks, their image files named from `output_folder` and their embedded images
-// stored in buffer 0.
+// The looks (a glTF input's, or an OBJ input's made glTF's), their image files named from
+// `output_folder` and their embedded images stored in buffer 0.
 void pass_looks_through(tinygltf::Model& model, const tinygltf::Model& looks,
                         const fs::path& output_folder) {
   model.materials = looks.materials;
@@ -695,7 +696,7 @@ Gltf_soup read_gltf(const std::string& path, bool binary) {
 }
 
 std::string gltf_bytes(const Mesh& mesh, bool binary, const Material_references& materials,
-                       const std::string& output_folder) {
+                       const std::string& output_folder, std::vector<std::string>& left_out) {
   const Wedge_mesh wedges = wedge_mesh(mesh);
   tinygltf::Model model;
   model.asset.version = "2.0";
@@ -739,13 +740,11 @@ std::string gltf_bytes(const Mesh& mesh, bool binary, const Material_references&
     shape.attributes["COLOR_0"] = append_float_attribute(model, colors, TINYGLTF_TYPE_VEC4, 1);
   }
 
-  if (materials.gltf)
-    pass_looks_through(model, *materials.gltf, fs::absolute(output_folder).lexically_normal());
-  else
-    for (const std::string& name : materials.names) {
-      model.materials.emplace_back();
-      model.materials.back().name = name;
-    }
+  // A texture needs texture coordinates to be drawn with (and the spec requires them).
+  const std::shared_ptr<const tinygltf::Model> looks =
+      materials.gltf ? materials.gltf
+                     : obj_material_looks(materials, !wedges.uvs.empty(), left_out);
+  pass_looks_through(model, *looks, fs::absolute(output_folder).lexically_normal());
 
   // One primitive per material, in the order of the material indices (none last), each of its
   // triangles in the mesh's order; every primitive shares the wedges.

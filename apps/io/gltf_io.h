@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace cgal_policies {
 namespace io {
@@ -48,10 +49,12 @@ Gltf_soup read_gltf(const std::string& path, bool binary);
 // primitive per material in the order of the material indices. Materials: those of
 // `materials.gltf` when the mesh was read from glTF, passed through with their textures, samplers
 // and images (an image the input held is embedded, an image file is named by its path relative to
-// `output_folder`); otherwise a plain material named after each of `materials.names`. A .gltf file
-// holds its buffer as a base64 data URI.
+// `output_folder`); otherwise those of obj_material_looks (obj_material_looks.h), their diffuse
+// maps embedded as base colour textures when the mesh has texture coordinates, and `left_out`
+// gets a line for each map left out. A .gltf file holds its buffer, embedded images included, as
+// a base64 data URI.
 std::string gltf_bytes(const Mesh& mesh, bool binary, const Material_references& materials,
-                       const std::string& output_folder);
+                       const std::string& output_folder, std::vector<std::string>& left_out);
 
 }  // namespace io
 }  // namespace cgal_policies

@@ -10,9 +10,9 @@
 namespace cgal_policies {
 namespace io {
 
-std::optional<std::string> diffuse_texture_file(const Material_references& materials) {
+std::vector<std::optional<Diffuse_map>> diffuse_maps(const Material_references& materials) {
   // The first map of each material, by name, over all libraries.
-  std::map<std::string, std::pair<std::string, std::string>> maps;  // name -> (library, file)
+  std::map<std::string, Diffuse_map> maps;
   for (const std::string& library : materials.libraries) {
     std::ifstream in(library);
     std::string line, material;
@@ -27,19 +27,30 @@ std::optional<std::string> diffuse_texture_file(const Material_references& mater
         // Options come first (-s 1 1 1, -clamp on, ...); the file name is the last word.
         std::string word, file;
         while (words >> word) file = word;
-        if (!file.empty()) maps.emplace(material, std::make_pair(library, file));
+        if (!file.empty())
+          maps.emplace(material, Diffuse_map{library, file,
+                                             (std::filesystem::path(library).parent_path() / file)
+                                                 .lexically_normal()
+                                                 .string()});
       }
     }
   }
+  std::vector<std::optional<Diffuse_map>> of_names;
   for (const std::string& name : materials.names) {
     const auto found = maps.find(name);
-    if (found == maps.end()) continue;
-    const auto& [library, file] = found->second;
-    const std::filesystem::path path = std::filesystem::path(library).parent_path() / file;
-    if (!std::filesystem::is_regular_file(path))
+    of_names.push_back(found == maps.end() ? std::nullopt
+                                           : std::optional<Diffuse_map>(found->second));
+  }
+  return of_names;
+}
+
+std::optional<std::string> diffuse_texture_file(const Material_references& materials) {
+  for (const std::optional<Diffuse_map>& map : diffuse_maps(materials)) {
+    if (!map) continue;
+    if (!std::filesystem::is_regular_file(map->path))
       throw Io_error(Io_error::Kind::unreadable_input,
-                     library + ": texture '" + file + "' does not exist");
-    return path.string();
+                     map->library + ": texture '" + map->file + "' does not exist");
+    return map->path;
   }
   return std::nullopt;
 }

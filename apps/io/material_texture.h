@@ -1,4 +1,4 @@
-// The texture image a textured OBJ mesh is drawn with: the diffuse map (map_Kd) of its materials,
+// The texture images a textured OBJ mesh is drawn with: the diffuse maps (map_Kd) of its materials,
 // found in the material libraries the file named (mesh_io.h).
 #ifndef CGAL_POLICIES_IO_MATERIAL_TEXTURE_H
 #define CGAL_POLICIES_IO_MATERIAL_TEXTURE_H
@@ -7,13 +7,25 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace cgal_policies {
 namespace io {
 
-// The map_Kd file of the first of `materials.names` that has one, resolved against its library's
-// folder; none when no library can be read or none has one. Throws Io_error (unreadable input,
-// "<library>: texture '<file>' does not exist") when the file named is missing.
+// A material's map_Kd line: the library that holds it, the file as the line names it, and that
+// file resolved against the library's folder (whether or not it exists).
+struct Diffuse_map {
+  std::string library, file, path;
+};
+
+// The map_Kd of each of `materials.names`, in their order: the first that the material's
+// definitions give over all libraries, none for a material without one or a library that cannot
+// be read.
+std::vector<std::optional<Diffuse_map>> diffuse_maps(const Material_references& materials);
+
+// The map_Kd file of the first of `materials.names` that has one (diffuse_maps); none when none
+// has one. Throws Io_error (unreadable input, "<library>: texture '<file>' does not exist") when
+// the file named is missing.
 std::optional<std::string> diffuse_texture_file(const Material_references& materials);
 
 }  // namespace io

@@ -255,8 +255,8 @@ Mesh triangle_mesh_from_soup(const std::string& path, std::vector<Point>& points
   return mesh;
 }
 
-void write_mesh_atomically(const Mesh& mesh, const std::string& path,
-                           const Material_references& materials) {
+std::vector<std::string> write_mesh_atomically(const Mesh& mesh, const std::string& path,
+                                               const Material_references& materials) {
   const std::string extension = lower_extension(path);
   const auto write_bytes = [&path](const std::string& bytes) {
     write_atomically(path, [&](const std::string& temporary) {
@@ -267,23 +267,25 @@ void write_mesh_atomically(const Mesh& mesh, const std::string& path,
   };
   const fs::path folder = fs::absolute(path).parent_path();
   if (is_gltf(extension)) {
-    write_bytes(gltf_bytes(mesh, extension == ".glb", materials, folder.string()));
-    return;
+    std::vector<std::string> left_out;
+    write_bytes(gltf_bytes(mesh, extension == ".glb", materials, folder.string(), left_out));
+    return left_out;
   }
   if (extension == ".obj" && Attributes(mesh).any()) {
     std::vector<std::string> libraries;
     for (const std::string& library : materials.libraries)
       libraries.push_back(fs::path(library).lexically_relative(folder).string());
     write_bytes(obj_text(mesh, libraries, materials.names));
-    return;
+    return {};
   }
   if (extension == ".ply" && Attributes(mesh).any_corner_values()) {
     write_bytes(ply_bytes(wedge_mesh(mesh)));
-    return;
+    return {};
   }
   write_atomically(path, [&](const std::string& temporary) {
     return CGAL::IO::write_polygon_mesh(temporary, mesh, CGAL::parameters::stream_precision(17));
   });
+  return {};
 }
 
 }  // namespace io

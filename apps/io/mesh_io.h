@@ -68,9 +68,10 @@ Mesh triangle_mesh_from_soup(const std::string& source, std::vector<Point>& poin
 // per point, and `materials` (mtllib paths made relative to the file's folder, a usemtl line
 // wherever the material changes). A PLY file gets a vertex per wedge with its values (ply_bytes).
 // A glTF file (.gltf, .glb) is always written by gltf_bytes (gltf_io.h), with whatever the mesh
-// carries.
-void write_mesh_atomically(const Mesh& mesh, const std::string& path,
-                           const Material_references& materials = {});
+// carries, an OBJ material's diffuse map embedded. Returns what the file was written without that
+// `materials` name, one line each (a texture file missing or unreadable); none is a failure.
+std::vector<std::string> write_mesh_atomically(const Mesh& mesh, const std::string& path,
+                                               const Material_references& materials = {});
 
 }  // namespace io
 }  // namespace cgal_policies

@@ -759,8 +759,8 @@ TEST_F(Cli, SimplifyCarriesTextureCoordinatesIntoAnObjWithEveryKindOfPolicy) {
   }
 }
 
-TEST_F(Cli, SimplifyPassesAGlbsMaterialsAndImagesThrough) {
-  // A textured 6 x 6 grid written by the apps, then given an embedded and an external image.
+// A flat 6 x 6 grid whose texture coordinates are its x and y over 6, every face of material 0.
+Mesh textured_grid() {
   Mesh grid = test_meshes::flat_grid(6);
   test_meshes::paint_corners(
       grid,
@@ -770,8 +770,13 @@ TEST_F(Cli, SimplifyPassesAGlbsMaterialsAndImagesThrough) {
       false);
   const Attributes painted = Attributes::add(grid, {false, false, false, true});
   for (const auto f : grid.faces()) (*painted.materials)[f] = 0;
+  return grid;
+}
+
+TEST_F(Cli, SimplifyPassesAGlbsMaterialsAndImagesThrough) {
+  // A textured grid written by the apps, then given an embedded and an external image.
   const fs::path plain = file("plain.glb");
-  apps::write_mesh_atomically(grid, plain.string(), {{}, {"skin"}, nullptr});
+  apps::write_mesh_atomically(textured_grid(), plain.string(), {{}, {"skin"}, nullptr});
   tinygltf::Model model;
   std::string error, warning;
   ASSERT_TRUE(tinygltf::TinyGLTF().LoadBinaryFromFile(&model, &error, &warning, plain.string()))
@@ -850,6 +855,49 @@ TEST_F(Cli, SimplifyWritesATexturedObjAsGlb) {
       run("mesh_error", spot + " " + out.string() + " --attributes --json --samples 2000");
   ASSERT_EQ(compared.exit_code, 0) << compared.err;
   EXPECT_EQ(json_number(compared.out, "seam_loops_b"), 1) << compared.out;
+}
+
+// bob's material names bob_diffuse.png (map_Kd), as gltfpack and obj2gltf embed it: the GLB holds
+// the file's bytes as its one image, the base colour texture of bob's material.
+TEST_F(Cli, SimplifyEmbedsAnObjsTextureInAGlb) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const fs::path out = file("bob.glb");
+  const Command_result r =
+      run("simplify", test_meshes::data_file("bob_tri.obj") + " " + out.string() + " 0.5 --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  const apps::Gltf_soup read = apps::read_gltf(out.string(), true);
+  ASSERT_EQ(read.looks->images.size(), 1u);
+  const tinygltf::Image& image = read.looks->images[0];
+  EXPECT_EQ(std::string(image.image.begin(), image.image.end()),
+            read_text(test_meshes::data_file("bob_diffuse.png")));
+  EXPECT_EQ(image.mimeType, "image/png");
+  EXPECT_TRUE(image.uri.empty());  // in the BIN chunk
+  ASSERT_EQ(read.looks->textures.size(), 1u);
+  EXPECT_EQ(read.looks->textures[0].source, 0);
+  ASSERT_EQ(read.looks->materials.size(), 1u);
+  EXPECT_EQ(read.looks->materials[0].pbrMetallicRoughness.baseColorTexture.index, 0);
+}
+
+// Real assets name textures they do not ship: the GLB is written all the same, without the
+// texture, and one line says so, even with --quiet.
+TEST_F(Cli, SimplifyWritesAGlbWithoutAMissingTextureAndOneWarning) {
+  const fs::path in = file("grid.obj"), out = file("grid.glb");
+  const fs::path library = write("grid.mtl", "newmtl skin\nmap_Kd missing.png\n");
+  apps::write_mesh_atomically(textured_grid(), in.string(),
+                              {{library.string()}, {"skin"}, nullptr});
+  const Command_result r =
+      run("simplify", in.string() + " " + out.string() + " 0.5 --policy gh --quiet --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "simplify: warning: " + library.string() +
+                       ": texture 'missing.png' does not exist; written without it\n");
+  const apps::Gltf_soup read = apps::read_gltf(out.string(), true);
+  EXPECT_EQ(double(read.soup.polygons.size()), json_number(r.out, "output_faces")) << r.out;
+  EXPECT_EQ(read.looks->images.size(), 0u);
+  EXPECT_EQ(read.looks->textures.size(), 0u);
+  ASSERT_EQ(read.looks->materials.size(), 1u);
+  EXPECT_EQ(read.looks->materials[0].name, "skin");
+  EXPECT_EQ(read.looks->materials[0].pbrMetallicRoughness.baseColorTexture.index, -1);
 }
 
 // The faces of the mesh in `path`, after checking that every corner has a texture coordinate.

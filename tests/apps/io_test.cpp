@@ -926,20 +926,139 @@ TEST(Gltf, ARoundTripKeepsEveryCornerToFloatPrecision) {
   fs::remove_all(folder);
 }
 
-// bob as OBJ, written as GLB and read back: every corner as it was, to float precision, its v
-// turned on the way out and back.
-TEST(Gltf, AnObjThroughGlbKeepsEveryCornerToFloatPrecision) {
+// A glTF or GLB file as tinygltf reads it, its images undecoded: their bytes stay in their views.
+tinygltf::Model undecoded_gltf(const fs::path& path) {
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader([](tinygltf::Image*, int, std::string*, std::string*, int, int,
+                           const unsigned char*, int, void*) { return true; },
+                        nullptr);
+  tinygltf::Model model;
+  std::string error, warning;
+  const bool loaded = path.extension() == ".glb"
+                          ? loader.LoadBinaryFromFile(&model, &error, &warning, path.string())
+                          : loader.LoadASCIIFromFile(&model, &error, &warning, path.string());
+  EXPECT_TRUE(loaded) << path << ": " << error;
+  return model;
+}
+
+// The bytes of an image stored in a bufferView.
+std::string view_bytes(const tinygltf::Model& model, const tinygltf::Image& image) {
+  const tinygltf::BufferView& view = model.bufferViews.at(std::size_t(image.bufferView));
+  const std::vector<unsigned char>& data = model.buffers.at(std::size_t(view.buffer)).data;
+  return std::string(data.begin() + std::ptrdiff_t(view.byteOffset),
+                     data.begin() + std::ptrdiff_t(view.byteOffset + view.byteLength));
+}
+
+// bob as OBJ, written as GLB and as .gltf and read back: every corner as it was, to float
+// precision, its v turned on the way out and back. bob's material names bob_diffuse.png (map_Kd):
+// both files embed its bytes as they are, as the base colour texture of bob's one material, and
+// name no other file.
+TEST(Gltf, AnObjThroughGltfKeepsEveryCornerAndEmbedsItsTexture) {
   SKIP_IF_REAL_MESHES_ARE_OFF();
   const fs::path folder = scratch_folder("gltf_bob");
   apps::Read_report report;
   const Mesh bob = apps::read_triangle_mesh(test_meshes::data_file("bob_tri.obj"), &report,
                                             apps::Corner_attribute_reading::keep);
-  const fs::path out = folder / "bob.glb";
-  apps::write_mesh_atomically(bob, out.string(), report.materials);
-  const Mesh read =
-      apps::read_triangle_mesh(out.string(), nullptr, apps::Corner_attribute_reading::keep);
-  EXPECT_EQ(read.number_of_faces(), bob.number_of_faces());
-  EXPECT_EQ(sorted(face_corners(read)), sorted(through_float(face_corners(bob))));
+  const std::string png = read_text(test_meshes::data_file("bob_diffuse.png"));
+  for (const std::string name : {"bob.glb", "bob.gltf"}) {
+    SCOPED_TRACE(name);
+    const fs::path out = folder / "out" / name;
+    EXPECT_EQ(apps::write_mesh_atomically(bob, out.string(), report.materials),
+              std::vector<std::string>{});
+    const Mesh read =
+        apps::read_triangle_mesh(out.string(), nullptr, apps::Corner_attribute_reading::keep);
+    EXPECT_EQ(read.number_of_faces(), bob.number_of_faces());
+    EXPECT_EQ(sorted(face_corners(read)), sorted(through_float(face_corners(bob))));
+
+    const tinygltf::Model model = undecoded_gltf(out);
+    ASSERT_EQ(model.buffers.size(), 1u);  // a GLB's BIN chunk, a .gltf's data URI
+    ASSERT_EQ(model.images.size(), 1u);
+    EXPECT_EQ(model.images[0].mimeType, "image/png");
+    EXPECT_EQ(model.images[0].uri, "");
+    EXPECT_EQ(model.images[0].name, "bob_diffuse");
+    EXPECT_EQ(view_bytes(model, model.images[0]), png);
+    ASSERT_EQ(model.textures.size(), 1u);
+    EXPECT_EQ(model.textures[0].source, 0);
+    EXPECT_EQ(model.textures[0].sampler, 0);
+    ASSERT_EQ(model.samplers.size(), 1u);
+    EXPECT_EQ(model.samplers[0].magFilter, TINYGLTF_TEXTURE_FILTER_LINEAR);
+    EXPECT_EQ(model.samplers[0].minFilter, TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR);
+    EXPECT_EQ(model.samplers[0].wrapS, TINYGLTF_TEXTURE_WRAP_REPEAT);
+    EXPECT_EQ(model.samplers[0].wrapT, TINYGLTF_TEXTURE_WRAP_REPEAT);
+    ASSERT_EQ(model.materials.size(), 1u);
+    EXPECT_EQ(model.materials[0].name, "feathers");
+    EXPECT_EQ(model.materials[0].pbrMetallicRoughness.baseColorTexture.index, 0);
+    EXPECT_EQ(model.materials[0].pbrMetallicRoughness.baseColorTexture.texCoord, 0);
+    EXPECT_EQ(read_text(out).find("bob_diffuse.png"), std::string::npos);
+  }
+  fs::remove_all(folder);
+}
+
+// Four squares' materials, each naming a map_Kd: a PNG named .jpg (after an option), a JPEG named
+// .png, a file that is not there and a Targa file (which glTF cannot hold); a fifth material names
+// the PNG again. The files are told by their first bytes, the PNG is embedded once, and each map
+// that cannot be is one line; the same squares without texture coordinates get no texture.
+TEST(Gltf, DiffuseMapsAreToldByTheirBytesAndTheMissingOnesAreLinesNotFailures) {
+  const fs::path folder = scratch_folder("gltf_maps");
+  const std::string jpeg = std::string("\xff\xd8\xff\xe0", 4) + "not decoded";
+  std::ofstream(folder / "photo.jpg", std::ios::binary) << gltf_fixtures::kImageBytes;
+  std::ofstream(folder / "scan.png", std::ios::binary) << jpeg;
+  std::ofstream(folder / "skin.tga", std::ios::binary) << std::string(18, '\0');
+  std::ofstream(folder / "looks.mtl")
+      << "newmtl png\nmap_Kd -s 1 1 1 photo.jpg\nnewmtl jpeg\nmap_Kd scan.png\n"
+         "newmtl missing\nmap_Kd missing.png\nnewmtl targa\nmap_Kd skin.tga\n"
+         "newmtl png_again\nmap_Kd photo.jpg\n";
+  std::ostringstream squares, bare;
+  squares << "mtllib looks.mtl\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n";
+  bare << "mtllib looks.mtl\n";
+  int x = 0;
+  for (const std::string material : {"png", "jpeg", "missing", "targa", "png_again"}) {
+    x += 2;
+    for (std::ostringstream* obj : {&squares, &bare})
+      *obj << "v " << x << " 0 0\nv " << x + 1 << " 0 0\nv " << x + 1 << " 1 0\nv " << x
+           << " 1 0\nusemtl " << material << '\n';
+    squares << "f -4/1 -3/2 -2/3 -1/4\n";
+    bare << "f -4 -3 -2 -1\n";
+  }
+  std::ofstream(folder / "squares.obj") << squares.str();
+  std::ofstream(folder / "bare.obj") << bare.str();
+  const std::string library = (folder / "looks.mtl").string();
+
+  apps::Read_report report;
+  const Mesh mesh = apps::read_triangle_mesh((folder / "squares.obj").string(), &report,
+                                             apps::Corner_attribute_reading::keep);
+  const fs::path out = folder / "out" / "squares.glb";
+  EXPECT_EQ(apps::write_mesh_atomically(mesh, out.string(), report.materials),
+            (std::vector<std::string>{
+                library + ": texture 'missing.png' does not exist; written without it",
+                library + ": texture 'skin.tga' is neither a PNG nor a JPEG image; written without "
+                          "it"}));
+  const tinygltf::Model model = undecoded_gltf(out);
+  ASSERT_EQ(model.images.size(), 2u);
+  EXPECT_EQ(model.images[0].mimeType, "image/png");
+  EXPECT_EQ(view_bytes(model, model.images[0]), gltf_fixtures::kImageBytes);
+  EXPECT_EQ(model.images[1].mimeType, "image/jpeg");
+  EXPECT_EQ(view_bytes(model, model.images[1]), jpeg);
+  ASSERT_EQ(model.textures.size(), 2u);
+  EXPECT_EQ(model.textures[1].source, 1);
+  std::vector<int> textures;
+  for (const tinygltf::Material& material : model.materials)
+    textures.push_back(material.pbrMetallicRoughness.baseColorTexture.index);
+  EXPECT_EQ(textures, (std::vector<int>{0, 1, -1, -1, 0}));
+  EXPECT_EQ(apps::read_triangle_mesh(out.string()).number_of_faces(), 10u);
+
+  apps::Read_report bare_report;
+  const Mesh bare_mesh = apps::read_triangle_mesh((folder / "bare.obj").string(), &bare_report,
+                                                  apps::Corner_attribute_reading::keep);
+  const fs::path bare_out = folder / "out" / "bare.glb";
+  EXPECT_EQ(apps::write_mesh_atomically(bare_mesh, bare_out.string(), bare_report.materials),
+            std::vector<std::string>{});
+  const tinygltf::Model bare_model = undecoded_gltf(bare_out);
+  EXPECT_EQ(bare_model.images.size(), 0u);
+  EXPECT_EQ(bare_model.textures.size(), 0u);
+  EXPECT_EQ(bare_model.samplers.size(), 0u);
+  ASSERT_EQ(bare_model.materials.size(), 5u);
+  EXPECT_EQ(bare_model.materials[0].pbrMetallicRoughness.baseColorTexture.index, -1);
   fs::remove_all(folder);
 }
 

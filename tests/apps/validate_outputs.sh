@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# The ctest test gltf_validator: simplify writes each shipped textured mesh, the vertex-colour PLY
-# and glTF files other tools made (gltfpack, gltf-pipeline's Draco) as .glb and .gltf, then bob
-# with its texture embedded, and the Khronos glTF-Validator (validate_gltf.mjs) must find no
-# error in any of them; its warnings are printed. Exits 77, which ctest counts as skipped, without node or the validator, and in CI's
+# The ctest test gltf_validator: simplify writes each shipped textured mesh (bob's map_Kd
+# embedded), the vertex-colour PLY and glTF files other tools made (gltfpack, gltf-pipeline's
+# Draco) as .glb and .gltf, bob with its texture missing, then bob with its texture as a data URI,
+# and the Khronos glTF-Validator (validate_gltf.mjs) must find no error in any of them; its
+# warnings are printed. Exits 77, which ctest counts as skipped, without node or the validator, and in CI's
 # sanitized pass (CGAL_POLICIES_SKIP_REAL_MESHES: the Release pass runs the real meshes).
 #
 #   validate_outputs.sh SIMPLIFY SOURCE_DIR NODE_MODULES WORK_DIR
@@ -28,7 +29,14 @@ for input in data/spot.obj data/bob_tri.obj data/spot_colors.ply \
     outputs+=("$work/$name.$extension")
   done
 done
-# bob's output with bob's texture embedded (a data URI), simplified again: the image is written
+# bob with a material library whose map_Kd is not there: written without the texture.
+cp "$source/data/bob_tri.obj" "$work/bob_missing.obj"
+printf 'newmtl feathers\nmap_Kd missing.png\n' >"$work/bob_tri.mtl"
+for extension in glb gltf; do
+  "$simplify" "$work/bob_missing.obj" "$work/bob_missing.$extension" 0.5 --quiet
+  outputs+=("$work/bob_missing.$extension")
+done
+# bob's output with its texture as a data URI instead, simplified again: the image is written
 # into the GLB's buffer, and into the .gltf's.
 node -e 'const fs = require("fs"), [gltf, png, out] = process.argv.slice(1);
   const g = JSON.parse(fs.readFileSync(gltf));
