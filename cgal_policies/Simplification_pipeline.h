@@ -26,8 +26,10 @@
 #include <cgal_policies/Laplacian_smoother.h>
 #include <cgal_policies/Simplification_options.h>
 #include <cgal_policies/Simplification_report.h>
+#include <cgal_policies/internal/Partitioned_job_files.h>
 #include <cgal_policies/internal/Streamed_cut.h>
 #include <cgal_policies/internal/fit_carrying_corner_values.h>
+#include <cgal_policies/internal/raw_mesh_file.h>
 #include <cgal_policies/internal/run_cgal_policies.h>
 #include <cgal_policies/internal/run_flat_array_policies.h>
 #include <cgal_policies/internal/run_hausdorff_policy.h>
@@ -37,8 +39,11 @@
 
 #include <CGAL/assertions.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <stdexcept>
 
@@ -63,43 +68,23 @@ class Simplification_pipeline {
   // Runs every pass on `mesh`. The passes that measure against the input (fit, bounded smoothing)
   // keep a copy of it.
   Simplification_report run(Mesh& mesh) const {
-    const bool needs_input = m_options.fit || m_options.smoothing.bounded;
-    return needs_input ? run(mesh, Mesh(mesh)) : run(mesh, Mesh());
+    return needs_input() ? run(mesh, Mesh(mesh)) : run(mesh, Mesh());
   }
 
   // The same, with the caller's copy of the input (`mesh` as it was), for a caller that keeps one
   // anyway; it may be empty when neither the fit nor bounded smoothing runs.
   Simplification_report run(Mesh& mesh, const Mesh& input) const {
-    Simplification_report report;
-    report.input_faces = mesh.number_of_faces();
-    report.input_vertices = mesh.number_of_vertices();
-    report.target_faces = m_options.target.of(report.input_faces);
-    report.bound = m_options.two_sided_bound();
-    // 1-2: repairs before the run; the target stays the one asked of the input.
-    if (m_options.merge_distance > 0)
-      timed(report, Simplification_pass::merge, [&] {
-        report.merged = Border_pair_contraction(m_options.merge_distance)(mesh);
-        if (report.merged.stitched_edges > 0) mesh.collect_garbage();
-      });
-    if (m_options.min_component > 1)
-      timed(report, Simplification_pass::components, [&] {
-        report.dropped_before = drop_components_smaller_than(mesh, m_options.min_component);
-      });
-    // A large mesh is cut into cells, for the policy and the fit to run on every core.
-    std::optional<internal::Spatial_cells> cells;
-    if (const std::size_t count = m_options.cell_count(mesh.number_of_faces()); count > 1)
-      cells.emplace(internal::face_centroids(mesh), count);
+    Simplification_report report = run_repairs(mesh);
+    const std::optional<internal::Spatial_cells> cells = cells_of(mesh);
     report.parts = cells ? cells->size() : 1;
     // 3: the policy; its seconds exclude the garbage collection after it.
     timed(report, Simplification_pass::simplification, [&] {
       std::optional<internal::Policy_outcome> outcome;
       if (cells) {
-        // Reported once, from this thread, for the whole.
-        Simplification_options part_options = m_options;
-        part_options.progress = nullptr;
+        const Simplification_options parts = part_options();
         outcome = internal::run_partitioned(
             mesh, report.target_faces, *cells, m_options.threads, [&](Mesh& m, std::size_t target) {
-              return run_policy(m, target, &m == &mesh ? m_options : part_options);
+              return run_policy(m, target, &m == &mesh ? m_options : parts);
             });
       }
       if (!outcome) {
@@ -146,21 +131,19 @@ class Simplification_pipeline {
         return internal::streamed_part(input.points, vertex_cell, spilled->read(c));
       };
     };
-    Simplification_options part_options = m_options;
-    part_options.progress = nullptr;
+    const Simplification_options parts = part_options();
     const std::optional<internal::Policy_outcome> outcome = internal::run_parts(
         cells.size(), input.faces, input.points.size(), report.target_faces, m_options.threads,
         input_parts(spills),
         [&](Mesh& m, std::size_t target) {
-          return run_policy(m, target, &m == &mesh ? m_options : part_options);
+          return run_policy(m, target, &m == &mesh ? m_options : parts);
         },
         mesh);
     if (!outcome) throw std::logic_error("a part lost a vertex of its cut");
     report.stop_reason = outcome->stop_reason;
-    report.pass_seconds[std::size_t(Simplification_pass::simplification)] =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    report.pass_seconds[std::size_t(Simplification_pass::simplification)] = seconds_since(start);
     finish(report, mesh, Mesh(), [&](const Two_sided_fit_options& fit) {
-      const internal::Spatial_cells shifted(input.sample, cells.size(), internal::kShiftedQuantile);
+      const internal::Spatial_cells shifted = internal::shifted_cells(input.sample, cells);
       std::optional<internal::Spill_files> shifted_spills;
       return internal::fit_by_cells(
           mesh, cells, shifted, m_options.threads, fit, [&](const internal::Spatial_cells& by) {
@@ -172,15 +155,224 @@ class Simplification_pipeline {
     return report;
   }
 
+  // A partitioned run as tasks that hand their work on through files in `folder` (empty, and seen
+  // by every task), so that a task scheduler (Dask, Ray) may run them in other processes or on
+  // other machines (docs/scale.md). The job runs in stages, each a task per part and a stitch:
+  //   const std::size_t parts = pipeline.cut(mesh, folder);
+  //   for (int stage = 0;; ++stage) {
+  //     for (std::size_t c = 0; c < parts; ++c) pipeline.run_part(folder, stage, c);  // anywhere
+  //     if (!pipeline.stitch(folder, stage)) break;
+  //   }
+  //   const Simplification_report report = pipeline.result(folder, mesh);
+  // Stage 0 simplifies the parts; stages 1 and 2 run the halves of the fit by cells. Every task is
+  // given the same options, and the result is run(mesh)'s, byte for byte; but where a part lost a
+  // vertex of its cut, the run over the whole starts from the parts put back together, in their
+  // vertex order. A mesh that run() would not cut is one part, run whole.
+
+  // Runs the repairs (passes 1-2) on `mesh` and cuts it into the parts of each stage; returns
+  // their number. Keeps a copy of the input while it cuts when a pass measures against it.
+  std::size_t cut(Mesh& mesh, const std::filesystem::path& folder) const {
+    CGAL_precondition(!m_options.on_collapse);
+    const auto start = std::chrono::steady_clock::now();
+    std::optional<Mesh> input;
+    if (needs_input()) input.emplace(mesh);
+    internal::Job_header job;
+    job.report = run_repairs(mesh);
+    const std::optional<internal::Spatial_cells> cells = cells_of(mesh);
+    job.partitioned = cells.has_value();
+    job.report.parts = cells ? cells->size() : 1;
+    if (cells) {
+      internal::collapse_zero_length_edges(mesh);
+      const std::vector<std::uint32_t> cell = internal::face_cells(mesh, *cells);
+      for (std::size_t c = 0; c < cells->size(); ++c)
+        internal::write_raw_mesh(internal::mesh_part(mesh, cell, std::uint32_t(c)),
+                                 internal::part_file(folder, 0, c));
+      job.cells = cells->splits();
+    } else {
+      internal::write_raw_mesh(mesh, internal::part_file(folder, 0, 0));
+    }
+    job.whole_faces = mesh.number_of_faces();
+    job.whole_vertices = mesh.number_of_vertices();
+    if (input && (!cells || m_options.smoothing.bounded))
+      internal::write_raw_mesh(*input, internal::job_input_file(folder));
+    if (input && cells && m_options.fit) {
+      // The input's part of each cell, for the fit's stages: the same cells, then shifted ones.
+      const std::vector<Eigen::Vector3d> centroids = internal::face_centroids(*input);
+      const internal::Spatial_cells shifted = internal::shifted_cells(centroids, *cells);
+      job.shifted_cells = shifted.splits();
+      for (const int stage : {1, 2}) {
+        const std::vector<std::uint32_t> cell =
+            internal::face_cells(centroids, stage == 1 ? *cells : shifted);
+        for (std::size_t c = 0; c < cells->size(); ++c)
+          internal::write_raw_mesh(internal::mesh_part(*input, cell, std::uint32_t(c), false),
+                                   internal::near_part_file(folder, stage, c));
+      }
+    }
+    job.report.pass_seconds[std::size_t(Simplification_pass::simplification)] =
+        seconds_since(start) - job.report.total_seconds();
+    internal::write_job_header(folder, job);
+    return job.report.parts;
+  }
+
+  // Runs part c of `stage`: the policy on it, or a half of the fit.
+  void run_part(const std::filesystem::path& folder, int stage, std::size_t c) const {
+    const auto start = std::chrono::steady_clock::now();
+    const internal::Job_header job = internal::read_job_header(folder);
+    Mesh part = internal::read_raw_mesh<Point>(internal::part_file(folder, stage, c));
+    internal::Part_result result;
+    if (stage > 0) {
+      result.fit = internal::fit_part(
+          part, internal::read_raw_mesh<Point>(internal::near_part_file(folder, stage, c)),
+          fit_stage_options(job.report, stage));
+    } else if (job.partitioned) {
+      const Simplification_options parts = part_options();
+      result.kept_locks = internal::simplify_part(
+          part, job.report.target_faces, job.whole_faces,
+          [&](Mesh& m, std::size_t target) { return run_policy(m, target, parts); });
+    } else {
+      result.outcome = run_policy(part, job.report.target_faces, m_options);
+      part.collect_garbage();
+    }
+    internal::write_raw_mesh(part, internal::done_part_file(folder, stage, c));
+    result.seconds = seconds_since(start);
+    internal::write_part_result(folder, stage, c, result);
+  }
+
+  // Stitches the parts of `stage` that run_part left; true when another stage follows. Each
+  // pass's seconds add those of its stitches and of the slowest part of each stage: the job's
+  // time when every part has a core of its own.
+  bool stitch(const std::filesystem::path& folder, int stage) const {
+    const auto start = std::chrono::steady_clock::now();
+    internal::Job_header job = internal::read_job_header(folder);
+    Simplification_report& report = job.report;
+    const std::size_t parts = report.parts;
+    std::vector<internal::Part_result> results;
+    for (std::size_t c = 0; c < parts; ++c)
+      results.push_back(internal::read_part_result(folder, stage, c));
+    double slowest = 0;
+    for (const internal::Part_result& r : results) slowest = std::max(slowest, r.seconds);
+    // The parts file_of(folder, of_stage, c) of a mesh of `whole_vertices` vertices, stitched.
+    const auto stitched = [&](const auto& file_of, int of_stage, std::size_t whole_vertices) {
+      std::vector<Mesh> meshes(parts);
+      for (std::size_t c = 0; c < parts; ++c)
+        meshes[c] = internal::read_raw_mesh<Point>(file_of(folder, of_stage, c));
+      return internal::stitch_parts(meshes, whole_vertices);
+    };
+    Mesh mesh;
+    int next = 0;  // the stage that follows, 0 for none
+    if (stage == 0) {
+      std::optional<internal::Policy_outcome> outcome = results.front().outcome;
+      if (!job.partitioned) {
+        mesh = internal::read_raw_mesh<Point>(internal::done_part_file(folder, 0, 0));
+      } else {
+        const bool kept_locks =
+            std::all_of(results.begin(), results.end(), [](const auto& r) { return r.kept_locks; });
+        mesh = stitched(kept_locks ? internal::done_part_file : internal::part_file, 0,
+                        job.whole_vertices);
+        if (!kept_locks) report.parts = 1;
+        outcome = run_policy(mesh, report.target_faces, m_options);
+      }
+      report.stop_reason = outcome->stop_reason;
+      report.attributes_carried = outcome->attributes_carried;
+      report.pass_seconds[std::size_t(Simplification_pass::simplification)] +=
+          slowest + seconds_since(start);
+      // The input, written whole when the run was not cut; when a part lost a vertex of its cut,
+      // put back together from its parts for the fit.
+      const bool whole_input = needs_input() && (!job.partitioned || m_options.smoothing.bounded);
+      const Mesh input = whole_input
+                             ? internal::read_raw_mesh<Point>(internal::job_input_file(folder))
+                         : report.parts == 1 && m_options.fit
+                             ? stitched(internal::near_part_file, 1, report.input_vertices)
+                             : Mesh();
+      finish(report, mesh, input, [&](const Two_sided_fit_options& fit) {
+        if (report.parts == 1) return internal::fit_carrying_corner_values(mesh, input, fit);
+        next = 1;
+        return Two_sided_fit_report();
+      });
+    } else {
+      const auto fit_start = std::chrono::steady_clock::now();
+      mesh = stitched(internal::done_part_file, stage, job.stage_vertices);
+      std::vector<Two_sided_fit_report> fits;
+      for (const internal::Part_result& r : results) fits.push_back(r.fit);
+      const Two_sided_fit_report half = internal::add_cell_fit_reports(fits);
+      report.fit.rounds += half.rounds;
+      internal::add_fit_counts(report.fit, half);
+      if (stage == 1 && fit_stage_options(report, 2).rounds > 0) next = 2;
+      report.pass_seconds[std::size_t(Simplification_pass::fit)] +=
+          slowest + seconds_since(fit_start);
+      report.output_faces = mesh.number_of_faces();
+      report.output_vertices = mesh.number_of_vertices();
+    }
+    if (next > 0) {
+      const internal::Spatial_cells by(next == 1 ? job.cells : job.shifted_cells);
+      const std::vector<std::uint32_t> cell = internal::face_cells(mesh, by);
+      for (std::size_t c = 0; c < parts; ++c)
+        internal::write_raw_mesh(internal::mesh_part(mesh, cell, std::uint32_t(c)),
+                                 internal::part_file(folder, next, c));
+      job.stage_vertices = mesh.number_of_vertices();
+    } else {
+      internal::write_raw_mesh(mesh, internal::job_output_file(folder));
+    }
+    internal::write_job_header(folder, job);
+    return next > 0;
+  }
+
+  // The result of a job whose last stage is stitched: `mesh` becomes its output.
+  Simplification_report result(const std::filesystem::path& folder, Mesh& mesh) const {
+    mesh = internal::read_raw_mesh<Point>(internal::job_output_file(folder));
+    return internal::read_job_header(folder).report;
+  }
+
   const Simplification_options& options() const { return m_options; }
 
  private:
+  // Whether a pass after the policy measures against the input.
+  bool needs_input() const { return m_options.fit || m_options.smoothing.bounded; }
+
+  // The options of a part of a partitioned run: progress is reported once, for the whole.
+  Simplification_options part_options() const {
+    Simplification_options options = m_options;
+    options.progress = nullptr;
+    return options;
+  }
+
+  static double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  // The report's counts of the input and passes 1-2 run on `mesh`: the repairs before the run;
+  // the target stays the one asked of the input.
+  Simplification_report run_repairs(Mesh& mesh) const {
+    Simplification_report report;
+    report.input_faces = mesh.number_of_faces();
+    report.input_vertices = mesh.number_of_vertices();
+    report.target_faces = m_options.target.of(report.input_faces);
+    report.bound = m_options.two_sided_bound();
+    if (m_options.merge_distance > 0)
+      timed(report, Simplification_pass::merge, [&] {
+        report.merged = Border_pair_contraction(m_options.merge_distance)(mesh);
+        if (report.merged.stitched_edges > 0) mesh.collect_garbage();
+      });
+    if (m_options.min_component > 1)
+      timed(report, Simplification_pass::components, [&] {
+        report.dropped_before = drop_components_smaller_than(mesh, m_options.min_component);
+      });
+    return report;
+  }
+
+  // A large mesh is cut into cells, for the policy and the fit to run on every core; none when
+  // it runs whole.
+  std::optional<internal::Spatial_cells> cells_of(const Mesh& mesh) const {
+    const std::size_t count = m_options.cell_count(mesh.number_of_faces());
+    if (count <= 1) return std::nullopt;
+    return internal::Spatial_cells(internal::face_centroids(mesh), count);
+  }
+
   template <class Pass>
   void timed(Simplification_report& report, Simplification_pass pass, const Pass& run) const {
     const auto start = std::chrono::steady_clock::now();
     run();
-    report.pass_seconds[std::size_t(pass)] =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    report.pass_seconds[std::size_t(pass)] = seconds_since(start);
     if (pass != Simplification_pass::simplification && m_options.pass_done)
       m_options.pass_done(pass);
   }
@@ -201,14 +393,25 @@ class Simplification_pipeline {
             [&] { report.smoothing_refused_moves = smooth(mesh, input, report.bound); });
     if (m_options.fit && !interrupted(report))
       timed(report, Simplification_pass::fit, [&] {
-        Two_sided_fit_options fit = m_options.fit_options;
-        fit.max_normal_angle_deg = m_options.max_normal_angle_deg;
-        fit.tolerance = report.bound;
-        report.fit = fit_by(fit);
+        report.fit = fit_by(fit_options(report));
         report.fitted = true;
       });
     report.output_faces = mesh.number_of_faces();
     report.output_vertices = mesh.number_of_vertices();
+  }
+
+  Two_sided_fit_options fit_options(const Simplification_report& report) const {
+    Two_sided_fit_options fit = m_options.fit_options;
+    fit.max_normal_angle_deg = m_options.max_normal_angle_deg;
+    fit.tolerance = report.bound;
+    return fit;
+  }
+
+  // Those of fit stage 1 or 2 of a job: a half of the fit by cells.
+  Two_sided_fit_options fit_stage_options(const Simplification_report& report, int stage) const {
+    Two_sided_fit_options fit = fit_options(report);
+    fit.rounds = internal::fit_half_rounds(fit.rounds, stage - 1);
+    return fit;
   }
 
   // Asks the callback between passes; an interrupted run reports it and skips the rest.

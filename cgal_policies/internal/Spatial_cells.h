@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <iterator>
+#include <utility>
 #include <vector>
 
 namespace cgal_policies {
@@ -17,6 +18,11 @@ namespace internal {
 
 class Spatial_cells {
  public:
+  struct Split {
+    int axis = 0;
+    double at = 0;  // below: the first child; at or above: the second
+  };
+
   // `cells` is rounded down to a power of two; 1 when there are fewer centroids than cells. Each
   // box is split at the `quantile` of its centroids along its longest side (default the median).
   Spatial_cells(std::vector<Eigen::Vector3d> centroids, std::size_t cells, double quantile = 0.5)
@@ -28,7 +34,16 @@ class Spatial_cells {
     if (m_levels > 0) split(centroids.begin(), centroids.end(), 0, 0);
   }
 
+  // The cells of these planes, as splits() gave them (a partitioned job's file).
+  explicit Spatial_cells(std::vector<Split> splits) : m_quantile(0), m_splits(std::move(splits)) {
+    while ((std::size_t(2) << m_levels) - 1 <= m_splits.size()) ++m_levels;
+    m_splits.resize((std::size_t(1) << m_levels) - 1);
+  }
+
   std::size_t size() const { return std::size_t(1) << m_levels; }
+
+  // The planes, a complete binary tree in heap order.
+  const std::vector<Split>& splits() const { return m_splits; }
 
   std::size_t cell_of(const Eigen::Vector3d& p) const {
     std::size_t node = 0;
@@ -38,11 +53,6 @@ class Spatial_cells {
   }
 
  private:
-  struct Split {
-    int axis = 0;
-    double at = 0;  // below: the first child; at or above: the second
-  };
-
   using Iterator = std::vector<Eigen::Vector3d>::iterator;
 
   void split(Iterator begin, Iterator end, std::size_t node, int level) {

@@ -64,6 +64,21 @@ void collapse_zero_length_edges(CGAL::Surface_mesh<Point>& mesh) {
   mesh.collect_garbage();
 }
 
+// Simplifies a part of a whole of `whole_faces` faces simplified to `target`, run_policy(part,
+// target) running the policy, and collects its garbage. Each part keeps kPartShare times its share
+// of the target: the last collapses, which set where the detail goes, are left to the run over the
+// whole, ordered across the cuts. False when the part lost a locked vertex.
+template <class Point, class RunPolicy>
+bool simplify_part(CGAL::Surface_mesh<Point>& part, std::size_t target, std::size_t whole_faces,
+                   const RunPolicy& run_policy) {
+  if (part.is_empty()) return true;
+  const double share = std::min(1.0, kPartShare * double(target) / double(whole_faces));
+  const std::size_t locked = locked_vertex_count(part);
+  run_policy(part, std::size_t(std::llround(share * double(part.number_of_faces()))));
+  part.collect_garbage();
+  return locked_vertex_count(part) == locked;
+}
+
 // The parts of cells 0 to `cells` - 1 of a mesh of `whole_faces` faces and `whole_vertices`
 // vertices (make_part(c) makes the part of cell c, with its lock and origin maps), each simplified
 // toward kPartShare times its share of `target`, run_policy(part or whole, target) running the
@@ -77,16 +92,9 @@ std::optional<Policy_outcome> run_parts(std::size_t cells, std::size_t whole_fac
                                         CGAL::Surface_mesh<Point>& whole) {
   std::vector<CGAL::Surface_mesh<Point>> parts(cells);
   std::vector<char> kept_locks(cells, 1);
-  // Each part keeps kPartShare times its share of the target: the last collapses, which set where
-  // the detail goes, are left to the run over the whole, ordered across the cuts.
-  const double share = std::min(1.0, kPartShare * double(target) / double(whole_faces));
   for_each_in_parallel(parts.size(), threads, [&](std::size_t c) {
     parts[c] = make_part(c);
-    if (parts[c].is_empty()) return;
-    const std::size_t locked = locked_vertex_count(parts[c]);
-    run_policy(parts[c], std::size_t(std::llround(share * double(parts[c].number_of_faces()))));
-    parts[c].collect_garbage();
-    kept_locks[c] = locked_vertex_count(parts[c]) == locked;
+    kept_locks[c] = simplify_part(parts[c], target, whole_faces, run_policy);
   });
   for (const char kept : kept_locks)
     if (!kept) return std::nullopt;
@@ -117,9 +125,30 @@ inline void add_fit_counts(Two_sided_fit_report& to, const Two_sided_fit_report&
   to.refused_flips += from.refused_flips;
 }
 
+// Fits a part of the output to `near`, the same cell of the input, its cut vertices pinned.
+template <class Point>
+Two_sided_fit_report fit_part(CGAL::Surface_mesh<Point>& part,
+                              const CGAL::Surface_mesh<Point>& near,
+                              const Two_sided_fit_options& options) {
+  if (part.number_of_faces() == 0 || near.number_of_faces() == 0) return {};
+  const auto lock = find_vertex_map<bool>(part, kLockedVertexMap);
+  return fit_carrying_corner_values(part, near, options,
+                                    [&](CGAL::SM_Vertex_index v) { return (*lock)[v]; });
+}
+
+// The report of a fit by cells from those of its cells: the moves and flips add up; the rounds
+// are those of the cell that ran the most.
+inline Two_sided_fit_report add_cell_fit_reports(const std::vector<Two_sided_fit_report>& reports) {
+  Two_sided_fit_report report;
+  for (const Two_sided_fit_report& r : reports) {
+    report.rounds = (std::max)(report.rounds, r.rounds);
+    add_fit_counts(report, r);
+  }
+  return report;
+}
+
 // The fitting pass by cells: each cell of the output fitted to the same cell of the input
-// (input_part(c), without corner values), on its own core, its cut vertices pinned, then the
-// cells stitched back. The reports add up; the rounds are those of the cell that ran the most.
+// (input_part(c), without corner values), on its own core, then the cells stitched back.
 template <class Point, class InputPart>
 Two_sided_fit_report fit_partitioned(CGAL::Surface_mesh<Point>& mesh, const Spatial_cells& cells,
                                      std::size_t threads, const Two_sided_fit_options& options,
@@ -130,23 +159,25 @@ Two_sided_fit_report fit_partitioned(CGAL::Surface_mesh<Point>& mesh, const Spat
   std::vector<Two_sided_fit_report> reports(cells.size());
   for_each_in_parallel(parts.size(), threads, [&](std::size_t c) {
     parts[c] = mesh_part(mesh, output_cell, std::uint32_t(c));
-    const Mesh near = input_part(c);
-    if (parts[c].number_of_faces() == 0 || near.number_of_faces() == 0) return;
-    const auto lock = find_vertex_map<bool>(parts[c], kLockedVertexMap);
-    reports[c] = fit_carrying_corner_values(parts[c], near, options,
-                                            [&](CGAL::SM_Vertex_index v) { return (*lock)[v]; });
+    reports[c] = fit_part(parts[c], input_part(c), options);
   });
   mesh = stitch_parts(parts, mesh.number_of_vertices());
-  Two_sided_fit_report report;
-  for (const Two_sided_fit_report& r : reports) {
-    report.rounds = (std::max)(report.rounds, r.rounds);
-    add_fit_counts(report, r);
-  }
-  return report;
+  return add_cell_fit_reports(reports);
 }
 
 // The cells of the second half of a fit by cells are cut at these quantiles.
 constexpr double kShiftedQuantile = 0.35;
+
+// The rounds of half 0 or 1 of a fit by cells of `rounds` rounds.
+inline int fit_half_rounds(int rounds, int half) {
+  return half == 0 ? (rounds + 1) / 2 : rounds - (rounds + 1) / 2;
+}
+
+// The cells of the second half of a fit by cells against an input of these face centroids.
+inline Spatial_cells shifted_cells(std::vector<Eigen::Vector3d> centroids,
+                                   const Spatial_cells& cells) {
+  return Spatial_cells(std::move(centroids), cells.size(), kShiftedQuantile);
+}
 
 // The fit by cells, in two halves of its rounds: over the run's `cells`, then over `shifted`, cut
 // elsewhere (kShiftedQuantile), so that the vertices pinned on the first cuts move too.
@@ -156,9 +187,9 @@ Two_sided_fit_report fit_by_cells(CGAL::Surface_mesh<Point>& mesh, const Spatial
                                   const Spatial_cells& shifted, std::size_t threads,
                                   Two_sided_fit_options fit, const InputParts& input_parts) {
   const int rounds = fit.rounds;
-  fit.rounds = (rounds + 1) / 2;
+  fit.rounds = fit_half_rounds(rounds, 0);
   Two_sided_fit_report report = fit_partitioned(mesh, cells, threads, fit, input_parts(cells));
-  fit.rounds = rounds - fit.rounds;
+  fit.rounds = fit_half_rounds(rounds, 1);
   if (fit.rounds == 0) return report;
   const Two_sided_fit_report second =
       fit_partitioned(mesh, shifted, threads, fit, input_parts(shifted));
@@ -174,7 +205,7 @@ Two_sided_fit_report fit_by_cells(CGAL::Surface_mesh<Point>& mesh,
                                   const Spatial_cells& cells, std::size_t threads,
                                   const Two_sided_fit_options& fit) {
   const std::vector<Eigen::Vector3d> centroids = face_centroids(input);
-  const Spatial_cells shifted(centroids, cells.size(), kShiftedQuantile);
+  const Spatial_cells shifted = shifted_cells(centroids, cells);
   return fit_by_cells(mesh, cells, shifted, threads, fit, [&](const Spatial_cells& by) {
     return [&input, cell = face_cells(centroids, by)](std::size_t c) {
       return mesh_part(input, cell, std::uint32_t(c), false);

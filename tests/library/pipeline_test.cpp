@@ -14,6 +14,7 @@
 #include <cgal_policies/Corner_attribute_carrier.h>
 #include <cgal_policies/Face_count_stop_predicate.h>
 #include <cgal_policies/internal/Mesh_parts.h>
+#include <cgal_policies/internal/raw_mesh_file.h>
 #include <cgal_policies/internal/run_partitioned.h>
 
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
@@ -960,6 +961,156 @@ TEST(StreamedRun, KeepsWhatAPartitionedRunKeepsOnTheBunny) {
   EXPECT_FALSE(bytes[0].empty());
   EXPECT_TRUE(bytes[0] == bytes[1]) << "one thread and two wrote different files";
   EXPECT_TRUE(folder.empty());
+}
+
+// ---------------------------------------------------------------------------------------------
+// Partitioned jobs: the steps of a partitioned run handing their work on through files
+// (Simplification_pipeline::cut, simplify_part, stitch; internal/raw_mesh_file.h).
+
+// A folder of its own under the test's temporary folder, removed with what it holds.
+class Job_folder {
+ public:
+  explicit Job_folder(const std::string& name)
+      : m_path(std::filesystem::path(testing::TempDir()) /
+               ("job_" + name + "_" + std::to_string(::getpid()))) {
+    std::filesystem::remove_all(m_path);
+    std::filesystem::create_directories(m_path);
+  }
+  ~Job_folder() { std::filesystem::remove_all(m_path); }
+  const std::filesystem::path& path() const { return m_path; }
+
+ private:
+  std::filesystem::path m_path;
+};
+
+// The tasks of a job on `mesh`, the parts of each stage in reverse order (any order will do); its
+// number of stages.
+int run_as_job(const cgal_policies::Simplification_options& options, Mesh& mesh,
+               const std::filesystem::path& folder, cgal_policies::Simplification_report& report) {
+  const apps::Pipeline pipeline(options);
+  const std::size_t parts = pipeline.cut(mesh, folder);
+  int stage = 0;
+  for (;; ++stage) {
+    for (std::size_t c = parts; c-- > 0;) pipeline.run_part(folder, stage, c);
+    if (!pipeline.stitch(folder, stage)) break;
+  }
+  report = pipeline.result(folder, mesh);
+  return stage + 1;
+}
+
+// A sphere with texture coordinates, normals, colours and materials on its corners.
+Mesh painted_sphere() {
+  Mesh sphere = loop_sphere(4);
+  paint_corners(
+      sphere,
+      [](Mesh::Face_index, const Point& p) {
+        return std::array<double, 2>{p.x() / 2 + 0.5, p.y() > 0 ? p.z() : p.z() + 3};
+      },
+      true);
+  paint_colors(sphere, [](Mesh::Face_index f, const Point& p) {
+    return std::array<double, 4>{std::abs(p.x()), 0.5, double(std::size_t(f) % 2), 1};
+  });
+  const auto materials =
+      cgal_policies::Corner_attributes<Point>::add(sphere, {false, false, false, true});
+  for (const auto f : sphere.faces()) (*materials.materials)[f] = std::uint32_t(f) % 3;
+  return sphere;
+}
+
+TEST(PartitionedJob, ReadsAPartBackAsItWasHeld) {
+  namespace internal = cgal_policies::internal;
+  const Mesh sphere = painted_sphere();
+  const internal::Spatial_cells cells(internal::face_centroids(sphere), 4);
+  const Mesh part = internal::mesh_part(sphere, internal::face_cells(sphere, cells), 1);
+  const Job_folder folder("raw");
+  internal::write_raw_mesh(part, folder.path() / "part");
+  const Mesh back = internal::read_raw_mesh<Point>(folder.path() / "part");
+  ASSERT_EQ(back.number_of_halfedges(), part.number_of_halfedges());
+  ASSERT_EQ(back.number_of_vertices(), part.number_of_vertices());
+  ASSERT_EQ(back.number_of_faces(), part.number_of_faces());
+  const cgal_policies::Corner_attributes<Point> was(part), is(back);
+  for (const auto h : part.halfedges()) {
+    EXPECT_EQ(back.next(h), part.next(h));
+    EXPECT_EQ(back.target(h), part.target(h));
+    EXPECT_EQ(back.face(h), part.face(h));
+    EXPECT_TRUE(was.same_values(was.values(h), is.values(h))) << "halfedge " << h;
+  }
+  const auto lock = [](const Mesh& m) {
+    return *internal::find_vertex_map<bool>(m, internal::kLockedVertexMap);
+  };
+  const auto origin = [](const Mesh& m) {
+    return *internal::find_vertex_map<Mesh::Vertex_index>(m, internal::kOriginVertexMap);
+  };
+  std::size_t locked = 0;
+  for (const auto v : part.vertices()) {
+    EXPECT_EQ(back.point(v), part.point(v));
+    EXPECT_EQ(back.halfedge(v), part.halfedge(v));
+    EXPECT_EQ(lock(back)[v], lock(part)[v]);
+    EXPECT_EQ(origin(back)[v], origin(part)[v]);
+    locked += lock(part)[v];
+  }
+  EXPECT_GT(locked, 0u);
+  for (const auto f : part.faces()) {
+    EXPECT_EQ(back.halfedge(f), part.halfedge(f));
+    EXPECT_EQ((*is.materials)[f], (*was.materials)[f]);
+  }
+}
+
+// Cut, parts and stitch give the bytes of the run in memory, with its report: on four parts with
+// each kind of corner value, with the fit by cells, and on one part (a mesh the run would not cut).
+TEST(PartitionedJob, GivesTheBytesOfTheRunInMemory) {
+  const Mesh sphere = painted_sphere();
+  struct Case {
+    std::string policy;
+    bool fit;
+    std::size_t parts;
+    int stages;  // the policy's, and the fit's two halves by cells
+  };
+  for (const Case& c :
+       {Case{"lt", true, 4, 3}, Case{"attributes", false, 4, 1}, Case{"fast", false, 4, 1},
+        Case{"lt", true, 1, 1}, Case{"fast", false, 1, 1}}) {
+    SCOPED_TRACE(c.policy + (c.fit ? " + fit" : "") + " on " + std::to_string(c.parts));
+    cgal_policies::Simplification_options options = policy_alone(c.policy, 600);
+    options.fit = c.fit;
+    options.parts = c.parts;
+    options.min_component = 2;
+    Mesh in_memory = sphere;
+    const cgal_policies::Simplification_report expected = apps::Pipeline(options).run(in_memory);
+    const Job_folder folder(c.policy);
+    Mesh mesh = sphere;
+    cgal_policies::Simplification_report report;
+    EXPECT_EQ(run_as_job(options, mesh, folder.path(), report), c.stages);
+    EXPECT_EQ(report.parts, c.parts);
+    EXPECT_EQ(report.parts, expected.parts);
+    EXPECT_EQ(report.input_faces, expected.input_faces);
+    EXPECT_EQ(report.output_faces, expected.output_faces);
+    EXPECT_EQ(report.stop_reason, expected.stop_reason);
+    EXPECT_EQ(report.attributes_carried, expected.attributes_carried);
+    EXPECT_EQ(report.fitted, c.fit);
+    EXPECT_EQ(report.fit.rounds, expected.fit.rounds);
+    EXPECT_EQ(report.fit.moves, expected.fit.moves);
+    EXPECT_EQ(report.fit.flips, expected.fit.flips);
+    EXPECT_GT(report.seconds(cgal_policies::Simplification_pass::simplification), 0);
+    EXPECT_GT(report.seconds(cgal_policies::Simplification_pass::components), 0);
+    EXPECT_TRUE(written_bytes(mesh, "job") == written_bytes(in_memory, "in_memory"))
+        << "the job and the run in memory wrote different files";
+  }
+}
+
+TEST(PartitionedJob, ADamagedFileIsAnErrorNamingIt) {
+  const Job_folder folder("damaged");
+  const apps::Pipeline pipeline(policy_alone("fast", 600));
+  Mesh mesh = painted_sphere();
+  ASSERT_EQ(pipeline.cut(mesh, folder.path()), 1u);
+  pipeline.run_part(folder.path(), 0, 0);
+  const std::filesystem::path part = folder.path() / "done_0_0";
+  std::filesystem::resize_file(part, 100);
+  try {
+    pipeline.stitch(folder.path(), 0);
+    FAIL() << "a truncated part was read";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), "not a mesh in the job file " + part.string());
+  }
+  EXPECT_THROW(pipeline.run_part(folder.path(), 0, 1), std::runtime_error);
 }
 
 }  // namespace
