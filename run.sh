@@ -10,7 +10,8 @@ required=(g++ make cmake libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmp
           clang-format libtinygltf-dev nlohmann-json3-dev libtbb-dev libmeshoptimizer-dev
           libdraco-dev)
 optional=(libopenmesh-dev gnuplot-nox pkg-config libglfw3-dev libimgui-dev libosmesa6-dev libgl-dev
-          libstb-dev python3-dev python3-pybind11 python3-numpy python3-pytest)
+          libstb-dev python3-dev python3-pybind11 python3-numpy python3-pytest
+          python3-distributed)
 
 # Installs the given packages that are missing (default: both lists).
 install_missing() {

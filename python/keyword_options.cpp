@@ -46,5 +46,28 @@ apps::Pipeline_request pipeline_request(const py::dict& keywords, const py::obje
   return request;
 }
 
+apps::Pipeline_request simplify_request(const py::object& target_count,
+                                        const py::object& target_reduction,
+                                        const py::object& policy, const py::object& fit,
+                                        const py::object& max_error, const py::object& threads,
+                                        py::dict keywords) {
+  const auto named = [&keywords](const char* key, const py::object& value) {
+    if (value.is_none()) return;
+    if (keywords.contains(key)) throw py::value_error(std::string("give ") + key + " once");
+    keywords[key] = value;
+  };
+  named("faces", target_count);
+  if (!target_reduction.is_none()) {
+    const double reduction = target_reduction.cast<double>();
+    if (!(reduction >= 0 && reduction < 1))
+      throw py::value_error("target_reduction must be a number in [0, 1)");
+    named("ratio", py::float_(1 - reduction));
+  }
+  named("policy", policy);
+  named("max_error", max_error);
+  named("threads", threads);
+  return pipeline_request(keywords, fit);
+}
+
 }  // namespace python
 }  // namespace cgal_policies

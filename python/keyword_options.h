@@ -20,6 +20,15 @@ namespace py = pybind11;
 // unknown keyword or a value out of range; TypeError for a value that is no number or string.
 apps::Pipeline_request pipeline_request(const py::dict& keywords, const py::object& fit);
 
+// The request of simplify()'s named arguments and its other keywords: target_count is `faces`,
+// target_reduction r is `ratio` 1 - r, the others keep their names. ValueError as above, and for
+// an option given twice or a reduction out of [0, 1).
+apps::Pipeline_request simplify_request(const py::object& target_count,
+                                        const py::object& target_reduction,
+                                        const py::object& policy, const py::object& fit,
+                                        const py::object& max_error, const py::object& threads,
+                                        py::dict keywords);
+
 }  // namespace python
 }  // namespace cgal_policies
 

@@ -3,8 +3,10 @@
 // attributes. Options are read by the command line's code and the reports are simplify's and
 // mesh_error's JSON objects, so that the module and the tools never disagree.
 #include "Python_callbacks.h"
+#include "Python_job.h"
 #include "Python_mesh.h"
 #include "keyword_options.h"
+#include "simplify_report.h"
 
 #include "cli/App_error.h"
 #include "cli/Json_object.h"
@@ -33,33 +35,13 @@ std::optional<py::array> optional_array(const py::object& given) {
   return py::module_::import("numpy").attr("asarray")(given).cast<py::array>();
 }
 
-py::dict as_dict(const apps::Json_object& json) {
-  return py::module_::import("json").attr("loads")(json.str());
-}
-
 // The run of simplify(), the GIL released while the pipeline works.
-std::pair<Python_mesh, py::dict> simplify_mesh(Python_mesh mesh, const py::object& target_count,
-                                               const py::object& target_reduction,
-                                               const py::object& policy, const py::object& fit,
-                                               const py::object& max_error,
-                                               const py::object& threads,
-                                               const py::object& progress, py::kwargs keywords) {
-  const auto named = [&keywords](const char* key, const py::object& value) {
-    if (value.is_none()) return;
-    if (keywords.contains(key)) throw py::value_error(std::string("give ") + key + " once");
-    keywords[key] = value;
-  };
-  named("faces", target_count);
-  if (!target_reduction.is_none()) {
-    const double reduction = target_reduction.cast<double>();
-    if (!(reduction >= 0 && reduction < 1))
-      throw py::value_error("target_reduction must be a number in [0, 1)");
-    named("ratio", py::float_(1 - reduction));
-  }
-  named("policy", policy);
-  named("max_error", max_error);
-  named("threads", threads);
-  const apps::Pipeline_request request = pipeline_request(keywords, fit);
+std::pair<Python_mesh, py::dict> simplify_mesh(
+    Python_mesh mesh, const py::object& target_count, const py::object& target_reduction,
+    const py::object& policy, const py::object& fit, const py::object& max_error,
+    const py::object& threads, const py::object& progress, const py::kwargs& keywords) {
+  const apps::Pipeline_request request = simplify_request(
+      target_count, target_reduction, policy, fit, max_error, threads, py::dict(keywords));
   Simplification_options options = request.options;
   Python_callbacks callbacks(progress);
   callbacks.attach(options);
@@ -70,12 +52,8 @@ std::pair<Python_mesh, py::dict> simplify_mesh(Python_mesh mesh, const py::objec
     run = apps::Pipeline(options).run(mesh.mesh);
   }
   callbacks.rethrow_if_raised();
-  apps::Json_object report;
-  report.add("policy", request.policy->name);
-  apps::add_fields(report, run, request.options, *request.policy);
-  report.add("repairs", mesh.repairs);
-  report.add("attributes", apps::corner_attributes_word(had_corner_values, run.attributes_carried));
-  return {std::move(mesh), as_dict(report)};
+  py::dict report = simplify_report(request, run, mesh.repairs, had_corner_values);
+  return {std::move(mesh), std::move(report)};
 }
 
 py::dict measure(const Python_mesh& a, const Python_mesh& b, std::size_t samples) {
@@ -121,9 +99,15 @@ Python_mesh read(const std::filesystem::path& path) {
   return Python_mesh(std::move(mesh), std::move(read));
 }
 
+// A texture the file is written without is a UserWarning, as simplify prints it on stderr.
 void write(const Python_mesh& mesh, const std::filesystem::path& path) {
-  py::gil_scoped_release released;
-  io::write_mesh_atomically(mesh.mesh, path.string(), mesh.references);
+  std::vector<std::string> left_out;
+  {
+    py::gil_scoped_release released;
+    left_out = io::write_mesh_atomically(mesh.mesh, path.string(), mesh.references);
+  }
+  for (const std::string& line : left_out)
+    if (PyErr_WarnEx(PyExc_UserWarning, line.c_str(), 1) != 0) throw py::error_already_set();
 }
 
 void translate_errors(std::exception_ptr error) {
@@ -269,6 +253,37 @@ raised again, and nothing is returned.
       py::arg("fit") = py::none(), py::arg("max_error") = py::none(),
       py::arg("threads") = py::none(), py::arg("progress") = py::none());
 
+  py::class_<python::Python_job>(m, "PartitionedJob", R"doc(
+A partitioned run (docs/scale.md) as tasks, each in whichever process or machine runs it, that
+hand their work on through files in `folder`, a path they all see: cut(mesh) once; then, for
+stage 0, 1, ..., run_part(stage, c) for each part c that cut counted (in any order, at once) and
+stitch(stage), until stitch returns False; then result(mesh) where cut ran. Stage 0 simplifies
+the parts, stages 1 and 2 run the fit by cells. The output is simplify()'s with the same options
+(parts=... sets the cut), byte for byte once written. cgal_policies.dask.simplify runs it on a
+Dask cluster.
+)doc")
+      .def(py::init([](const std::filesystem::path& folder, const py::object& target_count,
+                       const py::object& target_reduction, const py::object& policy,
+                       const py::object& fit, const py::object& max_error,
+                       const py::object& threads, const py::kwargs& keywords) {
+             return python::Python_job(
+                 folder, python::simplify_request(target_count, target_reduction, policy, fit,
+                                                  max_error, threads, py::dict(keywords)));
+           }),
+           py::arg("folder"), py::kw_only(), py::arg("target_count") = py::none(),
+           py::arg("target_reduction") = py::none(), py::arg("policy") = py::none(),
+           py::arg("fit") = py::none(), py::arg("max_error") = py::none(),
+           py::arg("threads") = py::none(),
+           "The job in `folder` (an empty folder) with simplify()'s options; ValueError as it.")
+      .def("cut", &python::Python_job::cut, py::arg("mesh"),
+           "Runs the repairs on a copy of `mesh`, cuts it into parts; returns their number.")
+      .def("run_part", &python::Python_job::run_part, py::arg("stage"), py::arg("c"),
+           "Runs part c of the stage: the policy on it (stage 0), or a half of the fit.")
+      .def("stitch", &python::Python_job::stitch, py::arg("stage"),
+           "Stitches the stage's parts; True when another stage follows.")
+      .def("result", &python::Python_job::result, py::arg("mesh"),
+           "(mesh, report) as simplify(mesh) gives them; `mesh` the one given to cut().");
+
   m.def("read", &python::read, py::arg("path"), R"doc(
 Reads a triangle mesh (.obj .off .ply .stl .gltf .glb) with its texture coordinates, normals,
 colours and materials, polygons triangulated and soups repaired as the tools do (see
@@ -276,8 +291,9 @@ Mesh.repairs). ValueError with the reader's message when it cannot.
 )doc");
   m.def("write", &python::write, py::arg("mesh"), py::arg("path"), R"doc(
 Writes a mesh by its extension (.obj .off .ply .stl .gltf .glb), all or nothing: an OBJ, PLY or
-glTF file keeps the corner attributes with their seams, an OBJ or glTF file the materials.
-OSError when the file cannot be written; nothing is left behind then.
+glTF file keeps the corner attributes with their seams, an OBJ or glTF file the materials, a
+glTF file an OBJ material's texture image (a UserWarning for one that cannot be read; the file
+is written without it). OSError when the file cannot be written; nothing is left behind then.
 )doc");
   m.def("measure", &python::measure, py::arg("a"), py::arg("b"), py::kw_only(),
         py::arg("samples") = apps::kDefaultErrorSamples, R"doc(

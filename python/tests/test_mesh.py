@@ -111,3 +111,13 @@ def test_a_failed_write_leaves_nothing(tmp_path):
     with pytest.raises(OSError):
         cp.write(mesh, tmp_path / "out.xyz")
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_texture_left_out_of_a_gltf_is_a_warning(tmp_path, data):
+    # bob's material library without its image: the GLB is written, without the texture.
+    for name in ("bob_tri.obj", "bob_tri.mtl"):
+        (tmp_path / name).write_bytes((data / name).read_bytes())
+    mesh = cp.read(tmp_path / "bob_tri.obj")
+    with pytest.warns(UserWarning, match=r"bob_tri\.mtl: texture 'bob_diffuse\.png' does not exist"):
+        cp.write(mesh, tmp_path / "out.glb")
+    assert (tmp_path / "out.glb").stat().st_size > 0
