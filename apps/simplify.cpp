@@ -6,6 +6,7 @@
 #include "cli/Snapshot_renderer.h"
 #include "cli/Stopwatch.h"
 #include "cli/app_main.h"
+#include "cli/out_of_core_run.h"
 #include "cli/pass_options.h"
 #include "cli/peak_memory.h"
 #include "cli/report_fields.h"
@@ -173,12 +174,8 @@ int run(int argc, char** argv) {
       throw App_error(exit_usage, "--snapshot draws IN whole, which --out-of-core never holds");
     const Streamed_mesh_file source(input);
     run = run_with_bar(source.declared_faces(), [&](const Pipeline& pipeline) {
-      return pipeline.run_streamed(source, mesh);
+      return run_out_of_core(pipeline, source, input, mesh);
     });
-    // As the reader of whole files says of a file without faces.
-    if (run.input_faces == 0)
-      throw Io_error(Io_error::Kind::unreadable_input,
-                     input + ": no faces (none, or none left once its equal points are joined)");
   } else {
     const Stopwatch reading;
     // Only an OBJ, PLY or glTF output can hold texture coordinates, normals and colours.

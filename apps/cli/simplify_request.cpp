@@ -1,6 +1,7 @@
 #include "simplify_request.h"
 
 #include "App_error.h"
+#include "out_of_core_run.h"
 #include "output_path.h"
 #include "pass_options.h"
 #include "policy_command_line.h"
@@ -57,9 +58,7 @@ Simplify_request take_simplify_request(Command_line& cli) {
   request.quiet = cli.take_flag("quiet");
   request.out_of_core = cli.take_flag("out-of-core");
   const cgal_policies::Simplification_options& options = request.options;
-  if (request.out_of_core &&
-      (options.two_sided_bound() > 0 || options.merge_distance > 0 || options.min_component > 1 ||
-       options.smoothing.bounded || request.measure))
+  if (request.out_of_core && (!runs_out_of_core(options) || request.measure))
     throw App_error(exit_usage,
                     "--out-of-core never holds IN whole, which --max-error, the hausdorff "
                     "policy, --merge-distance, --min-component, --smooth-bounded and --measure "
