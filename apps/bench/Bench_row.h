@@ -22,6 +22,7 @@ struct Bench_settings {
   std::size_t target_faces = 0;
   double time_limit_seconds = 0;  // the edge-collapse runs stop where they are after it; 0: none
   Option_values options;          // the option values given on the command line, by name
+  std::size_t threads = 0;        // cores of a pipeline row's cells, 0: all (the peers use one)
 };
 
 // What one run did.
@@ -31,6 +32,9 @@ struct Bench_run {
   std::size_t fit_flips = 0;
   cgal_policies::Stop_reason stop_reason = cgal_policies::Stop_reason::no_collapse_left;
   bool attributes_carried = false;
+  // Out of core, the input as the run counted it: its faces and its points once equal ones are
+  // joined; the bench never holds it whole to count them.
+  std::size_t input_faces = 0, input_vertices = 0;
 };
 
 struct Bench_row {
@@ -38,6 +42,11 @@ struct Bench_row {
   std::string summary;
   std::vector<Policy_option> options;  // what it reads of Bench_settings::options
   std::function<Bench_run(Mesh&, const Bench_settings&)> run;
+  // The run on a file read in passes (binary PLY or OBJ) into the result, never whole; empty for
+  // a row that needs the whole input (the peers, a bound).
+  std::function<Bench_run(const std::string& input, Mesh& result, const Bench_settings&)>
+      run_out_of_core = {};
+  bool uses_threads = false;  // runs once per thread count of the plan; else once
 };
 
 // The row of this suite's pipeline with `policy` alone, or followed by the fitting pass.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -30,18 +31,18 @@ std::string gnuplot_quote(const std::string& text) {
   return quoted + "'";
 }
 
-// The data of one mesh: one block per policy (gnuplot's "index"), rows sorted by face count.
+// The data of one mesh: one block per run label (gnuplot's "index"), rows sorted by face count.
 std::vector<std::string> write_mesh_data(const std::vector<const Run_record*>& runs,
                                          const std::string& path) {
   std::vector<std::string> policies;
   for (const Run_record* r : runs)
-    if (std::find(policies.begin(), policies.end(), r->policy) == policies.end())
-      policies.push_back(r->policy);
+    if (std::find(policies.begin(), policies.end(), run_label(*r)) == policies.end())
+      policies.push_back(run_label(*r));
   std::ofstream out(path);
   for (const std::string& policy : policies) {
     std::vector<const Run_record*> rows;
     for (const Run_record* r : runs)
-      if (r->policy == policy) rows.push_back(r);
+      if (run_label(*r) == policy) rows.push_back(r);
     std::sort(rows.begin(), rows.end(), [](const Run_record* a, const Run_record* b) {
       return a->output_faces < b->output_faces;
     });
@@ -77,10 +78,20 @@ bool draw_plots(const std::vector<Run_record>& records, const std::string& folde
   std::vector<std::string> meshes;
   for (const Run_record& r : records)
     if (std::find(meshes.begin(), meshes.end(), r.mesh) == meshes.end()) meshes.push_back(r.mesh);
+  bool any = false;
   for (const std::string& mesh : meshes) {
     std::vector<const Run_record*> runs;
     for (const Run_record& r : records)
       if (r.mesh == mesh) runs.push_back(&r);
+    // The plots are the error and the time over gh's.
+    if (std::any_of(runs.begin(), runs.end(), [](const Run_record* r) {
+          return !r->error_measured || !std::isfinite(r->time_vs_gh);
+        })) {
+      std::fprintf(stderr, "simplify_bench: no plots of %s: without gh or the error\n",
+                   mesh.c_str());
+      continue;
+    }
+    any = true;
     const std::string stem = file_stem(mesh), data = stem + ".dat";
     const std::vector<std::string> policies = write_mesh_data(runs, folder + "/" + data);
     script += "set output " + gnuplot_quote(stem + "_error.png") + "\n" +
@@ -93,6 +104,7 @@ bool draw_plots(const std::vector<Run_record>& records, const std::string& folde
               "\nset ylabel 'time / time of gh'\n" + plot_command(data, policies, 4) +
               "unset title\n";
   }
+  if (!any) return false;
   std::ofstream(folder + "/plots.gp") << script;
   const std::string command =
       "cd " + shell_quote(folder) + " && gnuplot plots.gp 2> gnuplot_errors.txt";

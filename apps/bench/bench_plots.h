@@ -11,8 +11,9 @@
 namespace apps {
 
 // Writes the data and the script under `folder` and runs gnuplot there, giving
-// <mesh>_error.png and <mesh>_time.png per mesh. Returns false, having said why on stderr, when
-// gnuplot is missing or fails; the benchmark goes on without plots.
+// <mesh>_error.png and <mesh>_time.png per mesh whose runs all have their error and a time over
+// gh's (not out of core, not without gh). Returns false, having said why on stderr, when gnuplot
+// is missing or fails or no mesh has plots; the benchmark goes on without plots.
 bool draw_plots(const std::vector<Run_record>& records, const std::string& folder);
 
 }  // namespace apps

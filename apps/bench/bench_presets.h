@@ -19,6 +19,12 @@ struct Bench_target {
 struct Bench_mesh {
   std::string path;
   std::vector<Bench_target> targets;
+  // The rows run on this mesh, by name; empty: every row of the plan.
+  std::vector<std::string> rows = {};
+  // Never read whole: the rows run on the file read in passes, and the error is not measured.
+  bool out_of_core = false;
+  // The rows left out and why, for the report; may be empty.
+  std::string left_out = {};
 };
 
 struct Bench_preset {
@@ -31,13 +37,21 @@ struct Bench_preset {
   double time_limit_seconds;
   // Policies whose output the preset also fits to the input ("P+fit" rows, docs/fitting.md).
   std::vector<std::string> fitted = {};
+  // Each of this suite's rows runs once per thread count (0: every core); the peers run once.
+  std::vector<std::size_t> threads = {0};
+  // For meshes made, not shipped: the script that makes them into a folder (its argument), which
+  // is the preset's data folder. Empty: the meshes are in data/.
+  std::string made_by = {};
 };
 
-// The presets by name: "standard", "papers", "quick".
+// The presets by name: "standard", "papers", "quick", "scale".
 const std::vector<Bench_preset>& bench_presets();
 
 // The preset of that name, or nullptr.
 const Bench_preset* find_bench_preset(const std::string& name);
+
+// Whether `mesh` runs the row of that name (Bench_mesh::rows).
+bool mesh_runs_row(const Bench_mesh& mesh, const std::string& row);
 
 // The face count a target asks of a mesh with `input_faces` faces, rounded as simplify rounds it.
 std::size_t target_face_count(const Bench_target& target, std::size_t input_faces);

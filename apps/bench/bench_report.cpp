@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -65,6 +66,12 @@ std::string target_cell(const Run_record& r) {
          std::to_string(r.target_faces);
 }
 
+std::string mean_error_cell(const Run_record& r, double d) {
+  return r.error_measured
+             ? percent(r.error.mean_a_to_b / d) + " / " + percent(r.error.mean_b_to_a / d)
+             : "not measured";
+}
+
 bool reached(const Run_record& r) { return r.output_faces <= r.target_faces; }
 bool timed_out(const Run_record& r) {
   return r.stop_reason == to_string(cgal_policies::Stop_reason::time_limit);
@@ -84,77 +91,115 @@ std::vector<std::vector<const Run_record*>> group_by_mesh(const std::vector<Run_
   return groups;
 }
 
-std::string mesh_table(const std::vector<const Run_record*>& runs) {
+// The plan's mesh of a run, by file name.
+const Bench_mesh* find_mesh(const Bench_plan& plan, const std::string& name) {
+  const auto it = std::find_if(plan.meshes.begin(), plan.meshes.end(), [&](const Bench_mesh& m) {
+    return std::filesystem::path(m.path).filename().string() == name;
+  });
+  return it == plan.meshes.end() ? nullptr : &*it;
+}
+
+std::string mesh_table(const std::vector<const Run_record*>& runs, const Bench_plan& plan) {
   const Run_record& first = *runs.front();
   std::string md = "## " + first.mesh + " (" + std::to_string(first.input_faces) + " faces, " +
                    std::to_string(first.input_vertices) + " vertices)\n\n";
   md +=
-      "| target → faces | policy | faces | seconds | × gh | faces removed/s | peak MiB (+run) | "
-      "Hausdorff % | mean % (→ / ←) | validity |\n";
-  md += "|---|---|--:|--:|--:|--:|--:|--:|--:|---|\n";
+      "| target → faces | policy | faces | seconds | fit s | × gh | faces removed/s | peak MiB "
+      "(+run) | Hausdorff % | mean % (→ / ←) | validity |\n";
+  md += "|---|---|--:|--:|--:|--:|--:|--:|--:|--:|---|\n";
   bool short_of_target = false, out_of_time = false;
   for (const Run_record* r : runs) {
     short_of_target |= !reached(*r) && !timed_out(*r);
     out_of_time |= timed_out(*r);
     const double d = r->error.bbox_diagonal > 0 ? r->error.bbox_diagonal : 1;
-    md += "| " + target_cell(*r) + " | " + r->policy + " | " + faces_cell(*r) + " | " +
+    md += "| " + target_cell(*r) + " | " + run_label(*r) + " | " + faces_cell(*r) + " | " +
           seconds_cell(r->seconds) + " | " +
+          (fitted_base(r->policy) ? seconds_cell(r->fit_seconds) : "–") + " | " +
           (std::isfinite(r->time_vs_gh) ? format("%.3g", r->time_vs_gh) : "–") + " | " +
           format("%.0f", r->faces_removed_per_second) + " | " + format("%.0f", r->peak_memory_mib) +
-          " (+" + format("%.0f", r->memory_added_mib) + ") | " + percent(r->error.hausdorff / d) +
-          " | " + percent(r->error.mean_a_to_b / d) + " / " + percent(r->error.mean_b_to_a / d) +
-          " | " + validity_cell(r->validity) + " |\n";
+          " (+" + format("%.0f", r->memory_added_mib) + ") | " +
+          (r->error_measured ? percent(r->error.hausdorff / d) : "–") + " | " +
+          mean_error_cell(*r, d) + " | " + validity_cell(r->validity) + " |\n";
   }
   if (short_of_target) md += "\n\\* stopped short of the target: no collapse was left.\n";
   if (out_of_time)
     md += "\n† stopped at the time limit (`--time-limit`), after one run; its time is the limit.\n";
+  const Bench_mesh* mesh = find_mesh(plan, first.mesh);
+  if (mesh && !mesh->left_out.empty()) md += "\nLeft out: " + mesh->left_out + ".\n";
   return md + "\n";
 }
 
-// Per mesh, among the policies that reached every target: the lowest mean error (both directions
-// averaged, then averaged over the mesh's targets) and the lowest geometric mean of the time
-// relative to gh (ratios average geometrically).
+// Per mesh, among the runs (policy, threads) that reached every target: the lowest mean error
+// (both directions averaged, then averaged over the mesh's targets; measured runs only) and the
+// lowest geometric mean of the time relative to gh (ratios average geometrically), or of the
+// seconds on a mesh without gh.
 std::string summary(const std::vector<std::vector<const Run_record*>>& groups) {
   std::string md =
-      "## Summary\n\nPer mesh, among the policies that reached every target: the mean error "
-      "averaged over the mesh's targets, the time ratio to gh averaged geometrically.\n\n";
+      "## Summary\n\nPer mesh, among the runs that reached every target: the mean error "
+      "averaged over the mesh's targets, the time ratio to gh (without gh: the seconds) averaged "
+      "geometrically.\n\n";
   for (const auto& runs : groups) {
-    std::vector<std::string> policies;
+    const bool with_gh = std::all_of(
+        runs.begin(), runs.end(), [](const Run_record* r) { return std::isfinite(r->time_vs_gh); });
+    std::vector<std::string> labels;
     for (const Run_record* r : runs)
-      if (std::find(policies.begin(), policies.end(), r->policy) == policies.end())
-        policies.push_back(r->policy);
+      if (std::find(labels.begin(), labels.end(), run_label(*r)) == labels.end())
+        labels.push_back(run_label(*r));
     std::string most_accurate, fastest;
     double best_error = INFINITY, best_time = INFINITY;
-    for (const std::string& policy : policies) {
+    for (const std::string& label : labels) {
       double error_sum = 0, log_time = 0;
       std::size_t n = 0;
-      bool eligible = true;
+      bool eligible = true, measured = true;
       for (const Run_record* r : runs) {
-        if (r->policy != policy) continue;
-        eligible &= reached(*r) && std::isfinite(r->time_vs_gh);
+        if (run_label(*r) != label) continue;
+        eligible &= reached(*r);
+        measured &= r->error_measured;
         error_sum += mean_error_rel(*r);
-        log_time += std::log(std::max(r->time_vs_gh, 1e-12));
+        log_time += std::log(std::max(with_gh ? r->time_vs_gh : r->seconds, 1e-12));
         ++n;
       }
       if (!eligible) continue;
       const double error = error_sum / double(n), time = std::exp(log_time / double(n));
-      if (error < best_error) {
+      if (measured && error < best_error) {
         best_error = error;
-        most_accurate = policy;
+        most_accurate = label;
       }
       if (time < best_time) {
         best_time = time;
-        fastest = policy;
+        fastest = label;
       }
     }
     md += "- " + runs.front()->mesh + ": ";
-    md += most_accurate.empty()
-              ? "no policy reached every target.\n"
-              : "lowest mean error: " + most_accurate + " (" + percent(best_error) +
-                    "% of the diagonal); fastest: " + fastest + " (" + format("%.3g", best_time) +
-                    " × gh).\n";
+    if (fastest.empty()) {
+      md += "no policy reached every target.\n";
+      continue;
+    }
+    if (!most_accurate.empty())
+      md += "lowest mean error: " + most_accurate + " (" + percent(best_error) +
+            "% of the diagonal); ";
+    md += "fastest: " + fastest + " (" + format("%.3g", best_time) + (with_gh ? " × gh" : " s") +
+          ").\n";
   }
   return md;
+}
+
+// Per run on more than one thread beside the same row's run on one: the time of the policy's
+// pass and the fit (pipeline_seconds) on one thread over its own (add_scaling).
+std::string scaling_table(const std::vector<Run_record>& records) {
+  std::string rows;
+  for (const Run_record& r : records) {
+    if (!r.scaling) continue;
+    rows += "| " + r.mesh + " | " + target_cell(r) + " | " + run_label(r) + " | " +
+            seconds_cell(*r.scaling * pipeline_seconds(r)) + " | " +
+            seconds_cell(pipeline_seconds(r)) + " | " + format("%.2f", *r.scaling) + " |\n";
+  }
+  if (rows.empty()) return "";
+  return "## Threads\n\nThe policy's pass and the fit, in seconds, on one thread and on the "
+         "run's; the scaling is the first over the second.\n\n"
+         "| mesh | target → faces | run | s on 1 thread | s | scaling |\n"
+         "|---|---|---|--:|--:|--:|\n" +
+         rows + "\n";
 }
 
 // With --attributes: what each run did with the corner attributes and, when it carried them, their
@@ -191,7 +236,7 @@ std::string fitting_table(const std::vector<Run_record>& records) {
   const auto find = [&](const Run_record& like, const std::string& policy) -> const Run_record* {
     for (const Run_record& r : records)
       if (r.mesh == like.mesh && r.target == like.target && r.label == like.label &&
-          r.policy == policy)
+          r.threads == like.threads && r.input_read == like.input_read && r.policy == policy)
         return &r;
     return nullptr;
   };
@@ -202,7 +247,7 @@ std::string fitting_table(const std::vector<Run_record>& records) {
     if (!fitted) continue;
     const Run_record* base = find(r, *fitted);
     const Run_record* lt = find(r, "lt");
-    rows += "| " + r.mesh + " | " + target_cell(r) + " | " + r.policy + " | " + faces_cell(r) +
+    rows += "| " + r.mesh + " | " + target_cell(r) + " | " + run_label(r) + " | " + faces_cell(r) +
             " | " + seconds_cell(r.fit_seconds) + " | " + std::to_string(r.fit_flips) + " | " +
             (base ? ratio(mean_error_rel(r), mean_error_rel(*base)) : "–") + " | " +
             (lt ? ratio(mean_error_rel(r), mean_error_rel(*lt)) : "–") + " | " +
@@ -270,9 +315,15 @@ std::string markdown_report(const std::vector<Run_record>& records, const std::s
         " face samples per direction, in % of the input's bounding-box diagonal; mean → is "
         "input to result, ← result to input. Peak MiB: the process's resident peak during the "
         "run (+ what the run added).\n\n";
+  if (std::any_of(records.begin(), records.end(),
+                  [](const Run_record& r) { return !r.error_measured; }))
+    md +=
+        "Out of core, the seconds include the reading, and the error is not measured: the "
+        "measure holds the input whole.\n\n";
   const auto groups = group_by_mesh(records);
-  for (const auto& runs : groups) md += mesh_table(runs);
-  return md + fitting_table(records) + attribute_table(records) + summary(groups);
+  for (const auto& runs : groups) md += mesh_table(runs, plan);
+  return md + fitting_table(records) + scaling_table(records) + attribute_table(records) +
+         summary(groups);
 }
 
 }  // namespace apps

@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,8 @@ struct Bench_plan {
   std::vector<Bench_row> rows;     // "gh" among them: the reference of every time ratio
   Option_values options;           // option values given on the command line
   std::size_t repetitions = 1;
+  // Each row that uses_threads runs once per count (0: every core), the others once.
+  std::vector<std::size_t> threads = {0};
   std::size_t samples = kDefaultErrorSamples;
   // A run still going after this many seconds stops where it is (0: no limit); see run_row.
   double time_limit_seconds = 0;
@@ -43,6 +46,8 @@ struct Run_record {
   double target_ratio = 0;  // 0 when the target is a face count
   std::size_t target_faces = 0;
   std::string policy;
+  std::size_t threads = 0;  // Bench_settings::threads: 0 is a row's default
+  std::string input_read;   // "whole", or "out of core" (Bench_mesh::out_of_core)
   std::size_t repetitions = 0;
   std::size_t output_faces = 0, output_vertices = 0;
   std::string stop_reason;
@@ -54,6 +59,9 @@ struct Run_record {
   double memory_added_mib = 0;  // that peak minus the resident size just before the run
   double fit_seconds = 0;       // the fitting pass of a "P+fit" run (fastest repetition), else 0
   std::size_t fit_flips = 0;
+  // On more than one thread: the same row's time on one thread over this run's (add_scaling).
+  std::optional<double> scaling;
+  bool error_measured = false;  // out of core, the error is not measured
   Mesh_error error;
   Mesh_validity validity;
   // With Bench_plan::attributes: "carried" or "none" (corner_attributes_word), and the
@@ -67,6 +75,10 @@ struct Run_record {
 template <typename Visitor>
 void for_each_field(const Run_record& r, Visitor&& visit) {
   const double d = r.error.bbox_diagonal > 0 ? r.error.bbox_diagonal : 1;
+  // An error not measured is missing, not zero.
+  const auto error = [&r](auto value) {
+    return r.error_measured ? std::optional<decltype(value)>(value) : std::nullopt;
+  };
   visit("mesh", r.mesh);
   visit("input_faces", r.input_faces);
   visit("input_vertices", r.input_vertices);
@@ -75,6 +87,8 @@ void for_each_field(const Run_record& r, Visitor&& visit) {
   visit("target_ratio", r.target_ratio);
   visit("target_faces", r.target_faces);
   visit("policy", r.policy);
+  visit("threads", r.threads);
+  visit("input_read", r.input_read);
   visit("repetitions", r.repetitions);
   visit("output_faces", r.output_faces);
   visit("output_vertices", r.output_vertices);
@@ -85,18 +99,18 @@ void for_each_field(const Run_record& r, Visitor&& visit) {
   visit("faces_removed_per_second", r.faces_removed_per_second);
   visit("peak_memory_mib", r.peak_memory_mib);
   visit("memory_added_mib", r.memory_added_mib);
-  visit("bbox_diagonal", r.error.bbox_diagonal);
-  visit("hausdorff", r.error.hausdorff);
-  visit("hausdorff_a_to_b", r.error.hausdorff_a_to_b);
-  visit("hausdorff_b_to_a", r.error.hausdorff_b_to_a);
-  visit("mean_a_to_b", r.error.mean_a_to_b);
-  visit("mean_b_to_a", r.error.mean_b_to_a);
-  visit("rms", r.error.rms);
-  visit("hausdorff_rel", r.error.hausdorff / d);
-  visit("mean_a_to_b_rel", r.error.mean_a_to_b / d);
-  visit("mean_b_to_a_rel", r.error.mean_b_to_a / d);
-  visit("rms_rel", r.error.rms / d);
-  visit("samples", r.error.samples);
+  visit("bbox_diagonal", error(r.error.bbox_diagonal));
+  visit("hausdorff", error(r.error.hausdorff));
+  visit("hausdorff_a_to_b", error(r.error.hausdorff_a_to_b));
+  visit("hausdorff_b_to_a", error(r.error.hausdorff_b_to_a));
+  visit("mean_a_to_b", error(r.error.mean_a_to_b));
+  visit("mean_b_to_a", error(r.error.mean_b_to_a));
+  visit("rms", error(r.error.rms));
+  visit("hausdorff_rel", error(r.error.hausdorff / d));
+  visit("mean_a_to_b_rel", error(r.error.mean_a_to_b / d));
+  visit("mean_b_to_a_rel", error(r.error.mean_b_to_a / d));
+  visit("rms_rel", error(r.error.rms / d));
+  visit("samples", error(r.error.samples));
   visit("valid", r.validity.valid);
   visit("closed", r.validity.closed);
   visit("boundary_edges", r.validity.boundary_edges);
@@ -106,6 +120,7 @@ void for_each_field(const Run_record& r, Visitor&& visit) {
   visit("euler_characteristic", r.validity.euler_characteristic);
   visit("fit_seconds", r.fit_seconds);
   visit("fit_flips", r.fit_flips);
+  visit("scaling", r.scaling);
   visit("attributes", r.attributes);
   for_each_field(r.attribute_error, visit);
 }
@@ -113,6 +128,17 @@ void for_each_field(const Run_record& r, Visitor&& visit) {
 // The mean error of a record in both directions, averaged, relative to the diagonal: the figure the
 // tables and the summary rank policies by.
 double mean_error_rel(const Run_record& r);
+
+// The row's name, with the threads it was given and "out of core" when they were set: what the
+// tables and plots tell runs apart by.
+std::string run_label(const Run_record& r);
+
+// The time a run spent in the policy's pass and the fitting pass: the figure of the scaling.
+double pipeline_seconds(const Run_record& r);
+
+// Sets the scaling of every run on more than one thread that has a run of the same row (policy)
+// on one thread on the same mesh and target: that run's pipeline_seconds over its own.
+void add_scaling(std::vector<Run_record>& records);
 
 // Runs the plan, printing progress on stderr. Meshes that cannot be read throw App_error.
 std::vector<Run_record> run_bench(const Bench_plan& plan);

@@ -8,12 +8,14 @@
 #include "bench_runner.h"
 #include "cli/App_error.h"
 #include "cli/Command_line.h"
+#include "cli/Json_object.h"
 #include "cli/app_main.h"
 #include "cli/policy_command_line.h"
 #include "io/atomic_write.h"
 #include "pipeline/policy_registry.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -22,6 +24,10 @@ namespace fs = std::filesystem;
 
 namespace apps {
 namespace {
+
+// Where the meshes of a preset that makes them (Bench_preset::made_by) are, unless --data says.
+constexpr const char* kMadeMeshesVariable = "CGAL_POLICIES_SCALE_INPUTS";
+constexpr const char* kMadeMeshesDefault = "/tmp/cgal_policies_scale";
 
 // This suite's pipelines, one row per policy, then the peers.
 std::vector<Bench_row> all_rows() {
@@ -47,12 +53,19 @@ void print_help() {
   for (const Bench_preset& p : bench_presets())
     std::cout << (&p == &bench_presets().front() ? "" : "                       ") << p.name << ": "
               << p.description << " (" << p.repetitions
-              << (p.repetitions == 1 ? " repetition" : " repetitions") << ", time limit "
-              << p.time_limit_seconds << " s)\n";
+              << (p.repetitions == 1 ? " repetition" : " repetitions") << ", "
+              << (p.time_limit_seconds > 0
+                      ? "time limit " + Json_object::format_number(p.time_limit_seconds) + " s"
+                      : std::string("no time limit"))
+              << ")\n";
   std::cout
       << "  --data DIR           where the presets' meshes are (default: the project's data/,\n"
          "                       " CGAL_POLICIES_DATA_DIR
-         ")\n"
+         ";\n"
+         "                       for a preset of made meshes, $"
+      << kMadeMeshesVariable << " or " << kMadeMeshesDefault
+      << ")\n"
+         "  --only FILE,...      run only these of the preset's meshes (file names)\n"
          "  --mesh FILE          a mesh of your own; repeat for several\n"
          "  --ratios A,B         targets as fractions of the faces kept (default 0.1)\n"
          "  --faces N,M          targets as face counts\n"
@@ -64,6 +77,12 @@ void print_help() {
          "                       the fitting pass (docs/fitting.md); the standard preset has\n"
          "                       lt+fit, gh+fit and hausdorff+fit without it; --policies\n"
          "                       takes P+fit\n"
+         "  --threads A,B        run each policy of this suite on each of these thread\n"
+         "                       counts, 0: every core (default: the preset's, else 0); the\n"
+         "                       peers run once; a Threads table gives the scaling from 1\n"
+         "  --out-of-core        read each --mesh (binary PLY) in passes, never whole, as\n"
+         "                       simplify --out-of-core does; this suite's policies only\n"
+         "                       (not hausdorff), and the error is not measured\n"
          "  --repetitions N      runs per case; the fastest counts (default: the preset's, "
          "else 3)\n"
          "  --samples N          face samples per direction of the error measure\n"
@@ -96,6 +115,58 @@ std::vector<std::string> split_list(const std::string& text) {
 
 std::size_t positive_count(const std::optional<double>& value, const std::string& option) {
   return value ? std::size_t(check_whole_number(*value, 1, kMaxCount, option)) : 0;
+}
+
+std::vector<std::size_t> parse_thread_counts(const std::string& list) {
+  std::vector<std::size_t> counts;
+  for (const std::string& n : split_list(list))
+    counts.push_back(
+        std::size_t(check_whole_number(parse_number(n, "--threads"), 0, 4096, "--threads")));
+  if (counts.empty()) throw App_error(exit_usage, "--threads: give at least one count");
+  return counts;
+}
+
+// The folder of a preset's meshes: --data, else data/ or, for made meshes, the folder the
+// environment names or the default one.
+std::string data_folder(const std::optional<std::string>& data, const Bench_preset* preset) {
+  if (data) return *data;
+  if (!preset || preset->made_by.empty()) return CGAL_POLICIES_DATA_DIR;
+  const char* made = std::getenv(kMadeMeshesVariable);
+  return made && *made ? made : kMadeMeshesDefault;
+}
+
+// The preset's meshes in `data`, only those named by --only when given.
+std::vector<Bench_mesh> preset_meshes(const Bench_preset& preset, const std::string& data,
+                                      const std::optional<std::string>& only) {
+  const std::vector<std::string> names = split_list(only.value_or(""));
+  for (const std::string& name : names)
+    if (std::none_of(preset.meshes.begin(), preset.meshes.end(),
+                     [&](const Bench_mesh& m) { return m.path == name; }))
+      throw App_error(exit_usage,
+                      "--only: the preset " + preset.name + " has no mesh '" + name + "'");
+  std::vector<Bench_mesh> meshes;
+  for (Bench_mesh m : preset.meshes) {
+    if (!names.empty() && std::find(names.begin(), names.end(), m.path) == names.end()) continue;
+    m.path = (fs::path(data) / m.path).string();
+    meshes.push_back(std::move(m));
+  }
+  return meshes;
+}
+
+// Fail before hours of work, not after: a missing mesh, in one line that says how to make the
+// made ones.
+void check_meshes_exist(const std::vector<Bench_mesh>& meshes, const Bench_preset* preset,
+                        const std::string& data) {
+  std::string missing;
+  for (const Bench_mesh& m : meshes)
+    if (!fs::is_regular_file(m.path)) missing += " " + fs::path(m.path).filename().string();
+  if (missing.empty()) return;
+  if (preset && !preset->made_by.empty())
+    throw App_error(exit_bad_input, data + ": missing" + missing + ": make them with " +
+                                        preset->made_by + " '" + data + "'" + missing);
+  for (const Bench_mesh& m : meshes)
+    if (!fs::is_regular_file(m.path))
+      throw App_error(exit_bad_input, m.path + ": cannot open: no such file");
 }
 
 std::vector<Bench_target> ad_hoc_targets(const std::optional<std::string>& ratios,
@@ -165,7 +236,10 @@ int run(int argc, char** argv) {
     return exit_success;
   }
   const std::optional<std::string> preset_name = cli.take_value("preset");
-  const std::string data = cli.take_value("data").value_or(CGAL_POLICIES_DATA_DIR);
+  const std::optional<std::string> data_option = cli.take_value("data");
+  const std::optional<std::string> only = cli.take_value("only");
+  const std::optional<std::string> threads = cli.take_value("threads");
+  const bool out_of_core = cli.take_flag("out-of-core");
   std::vector<std::string> mesh_files;
   while (const auto mesh = cli.take_value("mesh")) mesh_files.push_back(*mesh);
   const std::optional<std::string> ratios = cli.take_value("ratios"),
@@ -191,35 +265,39 @@ int run(int argc, char** argv) {
   if (!cli.positionals().empty())
     throw App_error(exit_usage, "unexpected argument '" + cli.positionals().front() + "'");
 
+  const Bench_preset* preset = preset_name ? find_bench_preset(*preset_name) : nullptr;
+  const std::string data = data_folder(data_option, preset);
   if (preset_name) {
-    const Bench_preset* preset = find_bench_preset(*preset_name);
     if (!preset) throw App_error(exit_usage, "unknown preset '" + *preset_name + "'");
-    if (!mesh_files.empty() || ratios || faces)
+    if (!mesh_files.empty() || ratios || faces || out_of_core)
       throw App_error(exit_usage,
-                      "--preset takes its own meshes and targets: no --mesh, --ratios "
-                      "or --faces with it");
-    for (Bench_mesh m : preset->meshes) {
-      m.path = (fs::path(data) / m.path).string();
-      plan.meshes.push_back(std::move(m));
-    }
+                      "--preset takes its own meshes and targets: no --mesh, --ratios, "
+                      "--faces or --out-of-core with it");
+    plan.meshes = preset_meshes(*preset, data, only);
     plan.repetitions = repetitions ? repetitions : preset->repetitions;
     plan.samples = samples ? samples : preset->samples;
     plan.time_limit_seconds = time_limit.value_or(preset->time_limit_seconds);
+    plan.threads = threads ? parse_thread_counts(*threads) : preset->threads;
   } else {
     if (mesh_files.empty()) throw App_error(exit_usage, "give --preset or --mesh (see --help)");
+    if (only) throw App_error(exit_usage, "--only picks among a preset's meshes: give --preset");
+    if (out_of_core && attributes)
+      throw App_error(exit_usage, "--out-of-core reads no corner attributes: no --attributes");
     const std::vector<Bench_target> targets = ad_hoc_targets(ratios, faces);
-    for (const std::string& file : mesh_files) plan.meshes.push_back({file, targets});
+    for (const std::string& file : mesh_files)
+      plan.meshes.push_back({file, targets, {}, out_of_core});
     plan.repetitions = repetitions ? repetitions : 3;
     plan.samples = samples ? samples : kDefaultErrorSamples;
     plan.time_limit_seconds = time_limit.value_or(0.0);
+    if (threads) plan.threads = parse_thread_counts(*threads);
   }
   // The "P+fit" rows: beside every policy of this suite with --fit, beside the preset's choice
   // without.
   std::vector<std::string> fitted;
   if (fit_all)
     for (const Bench_row& r : plan.rows) fitted.push_back(r.name);
-  else if (preset_name && !policy_list)
-    fitted = find_bench_preset(*preset_name)->fitted;
+  else if (preset && !policy_list)
+    fitted = preset->fitted;
   for (const std::string& name : fitted) {
     const Policy_entry* policy = find_policy(name);
     const auto at = std::find_if(plan.rows.begin(), plan.rows.end(),
@@ -227,10 +305,13 @@ int run(int argc, char** argv) {
     if (policy && at != plan.rows.end() && !has_row(plan.rows, name + kFitSuffix))
       plan.rows.insert(at + 1, pipeline_row(*policy, true));
   }
-  // Fail before hours of work, not after.
   for (const Bench_mesh& m : plan.meshes)
-    if (!fs::is_regular_file(m.path))
-      throw App_error(exit_bad_input, m.path + ": cannot open: no such file");
+    for (const Bench_row& r : plan.rows)
+      if (m.out_of_core && !r.run_out_of_core && mesh_runs_row(m, r.name))
+        throw App_error(exit_usage, r.name +
+                                        " needs the input whole: out of core, name this "
+                                        "suite's policies with --policies (not hausdorff)");
+  check_meshes_exist(plan.meshes, preset, data);
   if (out) {
     std::error_code ec;
     fs::create_directories(*out, ec);

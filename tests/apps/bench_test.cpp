@@ -1,6 +1,9 @@
 // simplify_bench end to end: the quick preset writes its report files with one row per run and
-// finite numbers, and its gh rows are exactly what simplify --policy gh --measure prints.
+// finite numbers, and its gh rows are exactly what simplify --policy gh --measure prints; the scale
+// preset's plan, on small stand-ins for its made meshes, and its scaling figure.
 #include "app_types.h"
+#include "bench_presets.h"
+#include "bench_runner.h"
 #include "io/mesh_io.h"
 #include "pipeline/policy_registry.h"
 #include "test_meshes.h"
@@ -127,8 +130,8 @@ int BenchQuickPreset::s_exit = -1;
 std::vector<Row> BenchQuickPreset::s_rows;
 
 TEST_F(BenchQuickPreset, CsvHasOneRowPerCaseAndPolicyWithFiniteNumbers) {
-  const std::set<std::string> text_columns = {"mesh",        "target", "label", "policy",
-                                              "stop_reason", "valid",  "closed"};
+  const std::set<std::string> text_columns = {"mesh",       "target",      "label", "policy",
+                                              "input_read", "stop_reason", "valid", "closed"};
   // Without --attributes, the corner-attribute columns stay empty (BenchAttributes fills them).
   const std::set<std::string> attribute_columns = {
       "attributes",           "uv_mean_rel",  "uv_max_rel",   "normal_angle_mean_deg",
@@ -138,8 +141,12 @@ TEST_F(BenchQuickPreset, CsvHasOneRowPerCaseAndPolicyWithFiniteNumbers) {
   std::set<std::string> policies;
   std::set<std::vector<std::string>> runs;
   for (const Row& row : s_rows) {
+    // One thread count, every core: no scaling.
+    EXPECT_EQ(row.at("threads"), "0");
+    EXPECT_EQ(row.at("scaling"), "");
+    EXPECT_EQ(row.at("input_read"), "whole");
     for (const auto& [column, cell] : row) {
-      if (attribute_columns.count(column)) {
+      if (attribute_columns.count(column) || column == "scaling") {
         EXPECT_EQ(cell, "") << column;
       } else if (!text_columns.count(column)) {
         EXPECT_TRUE(parses_as_finite(cell)) << column << " = " << cell;
@@ -305,6 +312,149 @@ TEST(BenchAttributes, CarriesAndMeasuresTheCornerAttributes) {
   }
   EXPECT_EQ(read_text(out / "report.md").find("## Corner attributes"), std::string::npos);
   fs::remove_all(out);
+}
+
+// The scale preset: per made mesh, the rows of the issue, each of this suite's on 1 and 2
+// threads, the largest out of core.
+TEST(BenchScalePreset, ListsItsMeshesAndRows) {
+  const apps::Bench_preset* scale = apps::find_bench_preset("scale");
+  ASSERT_NE(scale, nullptr);
+  EXPECT_EQ(scale->made_by, "scripts/make_scale_inputs.sh");
+  EXPECT_EQ(scale->threads, (std::vector<std::size_t>{1, 2}));
+  EXPECT_EQ(scale->fitted, (std::vector<std::string>{"flat-lt"}));
+  EXPECT_EQ(scale->repetitions, 1u);
+  ASSERT_EQ(scale->meshes.size(), 3u);
+  const std::vector<std::string> in_memory = {"fast", "flat-lt+fit", "meshopt"};
+  const std::vector<std::string> paths = {"dragon4.ply", "dragon16.ply", "dragon128.ply"};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const apps::Bench_mesh& mesh = scale->meshes[i];
+    EXPECT_EQ(mesh.path, paths[i]);
+    ASSERT_EQ(mesh.targets.size(), 1u);
+    EXPECT_EQ(mesh.targets[0].ratio, 0.01);
+    const bool largest = i == 2;
+    EXPECT_EQ(mesh.out_of_core, largest) << mesh.path;
+    EXPECT_EQ(mesh.rows, largest ? std::vector<std::string>{"fast"} : in_memory) << mesh.path;
+    EXPECT_EQ(mesh.left_out.empty(), !largest) << mesh.path;
+    EXPECT_FALSE(apps::mesh_runs_row(mesh, "gh")) << mesh.path;
+  }
+}
+
+// The preset's inputs missing: one line that says how to make them, exit 3, before any work.
+TEST(BenchScalePreset, MissingInputsSayHowToMakeThem) {
+  const fs::path missing =
+      fs::temp_directory_path() / ("cgal_policies_no_scale_" + std::to_string(::getpid()));
+  const fs::path err = missing.string() + ".stderr";
+  const std::string bench = std::string(CGAL_POLICIES_BIN_DIR) + "/simplify_bench --preset scale ";
+  const auto exit_code = [](int status) { return WIFEXITED(status) ? WEXITSTATUS(status) : -1; };
+  EXPECT_EQ(exit_code(run_command(bench + "--data '" + missing.string() + "' > /dev/null 2> '" +
+                                  err.string() + "'")),
+            3);
+  EXPECT_EQ(read_text(err), "simplify_bench: " + missing.string() +
+                                ": missing dragon4.ply dragon16.ply dragon128.ply: make them with "
+                                "scripts/make_scale_inputs.sh '" +
+                                missing.string() + "' dragon4.ply dragon16.ply dragon128.ply\n");
+  // Without --data: the folder of the environment; --only: those meshes alone.
+  EXPECT_EQ(exit_code(run_command("CGAL_POLICIES_SCALE_INPUTS='" + missing.string() + "' " + bench +
+                                  "--only dragon16.ply > /dev/null 2> '" + err.string() + "'")),
+            3);
+  EXPECT_EQ(read_text(err), "simplify_bench: " + missing.string() +
+                                ": missing dragon16.ply: make them with "
+                                "scripts/make_scale_inputs.sh '" +
+                                missing.string() + "' dragon16.ply\n");
+  EXPECT_EQ(exit_code(run_command(bench + "--only dragon8.ply > /dev/null 2>&1")), 2);
+  fs::remove(err);
+}
+
+// The whole preset on small stand-ins (a sphere of 5,120 faces under the made meshes' names): the
+// rows it lists, in order, the scaling of every 2-thread run, and the out-of-core rows as
+// simplify --out-of-core makes them, their error not measured.
+TEST(BenchScalePreset, RunsItsRowsOnStandIns) {
+  const fs::path out =
+      fs::temp_directory_path() / ("cgal_policies_bench_scale_" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  const fs::path inputs = out / "inputs";
+  fs::create_directories(inputs);
+  const test_meshes::Mesh sphere = test_meshes::loop_sphere(4);
+  ASSERT_EQ(sphere.number_of_faces(), 5120u);
+  for (const char* name : {"dragon4.ply", "dragon16.ply", "dragon128.ply"})
+    apps::write_mesh_atomically(sphere, (inputs / name).string());
+  ASSERT_EQ(run_command(std::string(CGAL_POLICIES_BIN_DIR) + "/simplify_bench --preset scale " +
+                        "--data '" + inputs.string() + "' --samples 1000 --out '" + out.string() +
+                        "' > /dev/null 2>&1"),
+            0);
+  const std::vector<Row> rows = read_csv(out / "runs.csv");
+  std::vector<std::string> runs;
+  for (const Row& row : rows)
+    runs.push_back(row.at("mesh") + " " + row.at("policy") + " " + row.at("threads") + " " +
+                   row.at("input_read"));
+  EXPECT_EQ(runs, (std::vector<std::string>{
+                      "dragon4.ply fast 1 whole", "dragon4.ply fast 2 whole",
+                      "dragon4.ply flat-lt+fit 1 whole", "dragon4.ply flat-lt+fit 2 whole",
+                      "dragon4.ply meshopt 0 whole", "dragon16.ply fast 1 whole",
+                      "dragon16.ply fast 2 whole", "dragon16.ply flat-lt+fit 1 whole",
+                      "dragon16.ply flat-lt+fit 2 whole", "dragon16.ply meshopt 0 whole",
+                      "dragon128.ply fast 1 out of core", "dragon128.ply fast 2 out of core"}));
+  ASSERT_EQ(rows.size(), 12u);
+  for (const Row& row : rows) {
+    const std::string run = row.at("mesh") + " " + row.at("policy") + " " + row.at("threads");
+    EXPECT_EQ(row.at("target_faces"), "51") << run;
+    EXPECT_LE(std::stoul(row.at("output_faces")), 51u) << run;
+    EXPECT_EQ(row.at("valid"), "true") << run;
+    EXPECT_EQ(row.at("scaling").empty(), row.at("threads") != "2") << run;
+    const bool measured = row.at("input_read") == "whole";
+    for (const char* field : {"mean_a_to_b", "mean_b_to_a", "hausdorff", "samples"})
+      EXPECT_EQ(row.at(field).empty(), !measured) << run << " " << field;
+  }
+  // The output of an out-of-core row is simplify --out-of-core's.
+  const fs::path simplified = out / "fast.ply";
+  const std::string json_path = simplified.string() + ".json";
+  ASSERT_EQ(run_command(std::string(CGAL_POLICIES_BIN_DIR) + "/simplify '" +
+                        (inputs / "dragon128.ply").string() + "' '" + simplified.string() +
+                        "' --faces 51 --policy fast --out-of-core --threads 1 --json --quiet > '" +
+                        json_path + "'"),
+            0);
+  const std::string json = read_text(json_path);
+  for (const char* field : {"input_faces", "input_vertices", "output_faces", "output_vertices"})
+    EXPECT_EQ(json_number(json, field), std::stod(rows[10].at(field))) << field;
+
+  const std::string report = read_text(out / "report.md");
+  EXPECT_NE(report.find("## Threads"), std::string::npos);
+  EXPECT_EQ(
+      count_occurrences(report, "| dragon128.ply | 1% → 51 | fast, 2 threads, out of core | "), 1u)
+      << report;
+  EXPECT_EQ(count_occurrences(report, "\nLeft out: flat-lt+fit"), 1u) << report;
+  EXPECT_EQ(count_occurrences(report, "| not measured |"), 2u) << report;
+  fs::remove_all(out);
+}
+
+// The scaling of a run on 2 threads: the same row's time on 1 thread over its own, the policy's
+// pass and the fit together; only beside a 1-thread run of the same row, mesh and target.
+TEST(BenchScaling, IsTheOneThreadTimeOverTheRunsTime) {
+  const auto record = [](std::string mesh, std::string policy, std::size_t threads, double seconds,
+                         double fit_seconds) {
+    apps::Run_record r;
+    r.mesh = std::move(mesh);
+    r.target = "1%";
+    r.policy = std::move(policy);
+    r.threads = threads;
+    r.input_read = "whole";
+    r.seconds = seconds;
+    r.fit_seconds = fit_seconds;
+    return r;
+  };
+  std::vector<apps::Run_record> records = {
+      record("a.ply", "fast", 1, 10, 0),         record("a.ply", "fast", 2, 4, 0),
+      record("a.ply", "flat-lt+fit", 1, 30, 10), record("a.ply", "flat-lt+fit", 2, 16, 4),
+      record("a.ply", "meshopt", 0, 3, 0),       record("b.ply", "fast", 2, 5, 0)};
+  apps::add_scaling(records);
+  EXPECT_FALSE(records[0].scaling);
+  ASSERT_TRUE(records[1].scaling);
+  EXPECT_EQ(*records[1].scaling, 2.5);
+  EXPECT_FALSE(records[2].scaling);
+  ASSERT_TRUE(records[3].scaling);
+  EXPECT_EQ(*records[3].scaling, 2.0);  // (30 + 10) / (16 + 4)
+  EXPECT_FALSE(records[4].scaling);
+  EXPECT_FALSE(records[5].scaling);  // no run of b.ply on one thread
 }
 
 }  // namespace
