@@ -1,5 +1,5 @@
 // A partitioned job run from Python a step at a time (Simplification_pipeline::cut,
-// simplify_part, stitch; docs/scale.md): the tasks of cgal_policies.dask, each made anew in
+// run_part, stitch, result; docs/scale.md): the tasks of cgal_policies.dask, each made anew in
 // whichever process runs it from the folder the steps share and simplify()'s options.
 #ifndef CGAL_POLICIES_PYTHON_PYTHON_JOB_H
 #define CGAL_POLICIES_PYTHON_PYTHON_JOB_H
