@@ -261,7 +261,7 @@ class Simplification_pipeline {
     Mesh mesh;
     int next = 0;  // the stage that follows, 0 for none
     if (stage == 0) {
-      std::optional<internal::Policy_outcome> outcome = results.front().outcome;
+      internal::Policy_outcome outcome = results.front().outcome;  // of a part run whole
       if (!job.partitioned) {
         mesh = internal::read_raw_mesh<Point>(internal::done_part_file(folder, 0, 0));
       } else {
@@ -272,8 +272,8 @@ class Simplification_pipeline {
         if (!kept_locks) report.parts = 1;
         outcome = run_policy(mesh, report.target_faces, m_options);
       }
-      report.stop_reason = outcome->stop_reason;
-      report.attributes_carried = outcome->attributes_carried;
+      report.stop_reason = outcome.stop_reason;
+      report.attributes_carried = outcome.attributes_carried;
       report.pass_seconds[std::size_t(Simplification_pass::simplification)] +=
           slowest + seconds_since(start);
       // The input, written whole when the run was not cut; when a part lost a vertex of its cut,
