@@ -6,6 +6,7 @@
 #include "cli/Snapshot_renderer.h"
 #include "cli/Stopwatch.h"
 #include "cli/app_main.h"
+#include "cli/lod_chain.h"
 #include "cli/out_of_core_run.h"
 #include "cli/pass_options.h"
 #include "cli/peak_memory.h"
@@ -26,6 +27,7 @@
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
+#include <vector>
 
 namespace apps {
 namespace {
@@ -39,6 +41,11 @@ void print_help() {
          "materials alone); a glTF OUT of a glTF IN keeps their textures and images too.\n\n"
          "  RATIO, --ratio R      keep this fraction of the faces, 0 < R <= 1\n"
          "  --faces N             keep N faces instead\n"
+         "  --lod R0,R1,...       a chain of levels of detail instead, finest first: level k\n"
+         "                        keeps Rk of IN's faces, made from level k - 1 by the same\n"
+         "                        pipeline; a glTF OUT holds every level (MSFT_lod), any\n"
+         "                        other OUT becomes OUT_lod0, OUT_lod1, ... (all or none);\n"
+         "                        each level is measured against IN; at most 16 levels\n"
          "  --policy NAME         "
       << policy_names()
       << " (default: the default pipeline,\n"
@@ -142,6 +149,105 @@ std::vector<std::string> write_mesh_and_snapshot(const Mesh& original, const Mes
   }
 }
 
+// The pipeline of `options` with a progress bar from `start` faces.
+template <class Run_pipeline>
+cgal_policies::Simplification_report run_with_bar(cgal_policies::Simplification_options options,
+                                                  std::size_t start, bool quiet,
+                                                  const Run_pipeline& run_pipeline) {
+  Progress_bar bar(start, options.target.of(start), !quiet && start > 0);
+  options.progress = [&bar](cgal_policies::Simplification_pass pass, double, std::size_t faces) {
+    if (pass == cgal_policies::Simplification_pass::simplification) bar.update(faces);
+  };
+  return run_pipeline(Pipeline(options));
+}
+
+// IN as simplify read it.
+struct Read_input {
+  const Mesh& mesh;
+  const Read_report& report;
+  double seconds;
+  bool had_corner_values;
+};
+
+// --lod: each level made from the one before (the fit and bounded smoothing measuring against
+// IN), every level written at once, all or none, then each measured against IN.
+int run_lod_chain(const Simplify_request& request, const Read_input& input) {
+  const std::vector<double>& ratios = request.lod_ratios;
+  std::vector<cgal_policies::Simplification_options> options;
+  std::vector<cgal_policies::Simplification_report> runs;
+  std::vector<Mesh> levels;
+  for (std::size_t k = 0; k < ratios.size(); ++k) {
+    options.push_back(lod_level_options(request.options, ratios, k, input.mesh.number_of_faces()));
+    Mesh level = k == 0 ? input.mesh : levels.back();
+    runs.push_back(
+        run_with_bar(options.back(), level.number_of_faces(), request.quiet,
+                     [&](const Pipeline& pipeline) { return pipeline.run(level, input.mesh); }));
+    levels.push_back(std::move(level));
+  }
+  const std::vector<double> coverage = lod_screen_coverage(ratios);
+  std::vector<Lod_level> chain;
+  for (std::size_t k = 0; k < levels.size(); ++k) chain.push_back({&levels[k], coverage[k]});
+  const Stopwatch writing;
+  // Even with --quiet: OUT lacks something IN had.
+  for (const std::string& loss :
+       write_lod_chain_atomically(chain, request.output, input.report.materials))
+    std::cerr << "simplify: warning: " << loss << '\n';
+  const double write_seconds = writing.seconds();
+  if (request.quiet && !request.json) return exit_success;
+
+  const bool one_file = holds_lod_chain(request.output);
+  const std::vector<std::string> files = lod_level_paths(request.output, levels.size());
+  const std::size_t samples = request.samples.value_or(kDefaultErrorSamples);
+  std::vector<Json_object> level_reports;
+  bool carried = true;
+  for (std::size_t k = 0; k < levels.size(); ++k) {
+    const cgal_policies::Simplification_report& run = runs[k];
+    const Mesh_error error = measure_mesh_error(input.mesh, levels[k], samples);
+    Json_object level;
+    level.add("level", k);
+    level.add("ratio", ratios[k]);
+    level.add("output", one_file ? request.output : files[k]);
+    if (one_file) {
+      level.add("node", k);
+      level.add("screen_coverage", coverage[k]);
+    }
+    add_fields(level, run, options[k], *request.policy);
+    add_fields(level, error);
+    add_fields(level, check_mesh_validity(levels[k]));
+    if (input.had_corner_values)
+      add_fields(level, measure_attribute_error(input.mesh, levels[k], samples));
+    level_reports.push_back(level);
+    carried = carried && run.attributes_carried;
+    if (!request.json)
+      std::printf(
+          "level %zu (%g): %zu -> %zu faces in %.3f s (%s), two-sided Hausdorff %.4f%%, "
+          "mean %.4f%% / %.4f%% of the diagonal\n",
+          k, ratios[k], run.input_faces, run.output_faces, run.total_seconds(),
+          to_string(run.stop_reason), 100 * error.hausdorff / error.bbox_diagonal,
+          100 * error.mean_a_to_b / error.bbox_diagonal,
+          100 * error.mean_b_to_a / error.bbox_diagonal);
+  }
+  if (!request.json) {
+    for (const std::string& file : files) std::printf("wrote %s\n", file.c_str());
+    return exit_success;
+  }
+  Json_object report;
+  report.add("policy", request.policy->name);
+  report.add("input", request.input);
+  report.add("output", request.output);
+  report.add("outputs", files);
+  report.add("input_faces", input.mesh.number_of_faces());
+  report.add("input_vertices", input.mesh.number_of_vertices());
+  report.add("read_seconds", input.seconds);
+  report.add("write_seconds", write_seconds);
+  report.add("peak_memory_mib", peak_rss_mib());
+  report.add("repairs", input.report.repairs);
+  report.add("attributes", corner_attributes_word(input.had_corner_values, carried));
+  report.add("levels", level_reports);
+  std::cout << report.str() << '\n';
+  return exit_success;
+}
+
 int run(int argc, char** argv) {
   Command_line cli(argc, argv);
   if (cli.take_flag("help", "-h")) {
@@ -155,15 +261,8 @@ int run(int argc, char** argv) {
   const bool quiet = request.quiet, measure = request.measure;
 
   const cgal_policies::Simplification_options& options = request.options;
-  // The pipeline with a progress bar from `start` faces.
-  const auto run_with_bar = [&](std::size_t start, const auto& run_pipeline) {
-    Progress_bar bar(start, options.target.of(start), !quiet && start > 0);
-    cgal_policies::Simplification_options with_bar = options;
-    with_bar.progress = [&bar](cgal_policies::Simplification_pass pass, double, std::size_t faces) {
-      if (pass == cgal_policies::Simplification_pass::simplification) bar.update(faces);
-    };
-    return run_pipeline(Pipeline(with_bar));
-  };
+  if (snapshot && !request.lod_ratios.empty())
+    throw App_error(exit_usage, "--snapshot draws one output, and --lod writes several");
   Read_report read_report;
   Mesh mesh, original;
   bool input_had_corner_values = false;
@@ -173,7 +272,7 @@ int run(int argc, char** argv) {
     if (snapshot)
       throw App_error(exit_usage, "--snapshot draws IN whole, which --out-of-core never holds");
     const Streamed_mesh_file source(input);
-    run = run_with_bar(source.declared_faces(), [&](const Pipeline& pipeline) {
+    run = run_with_bar(options, source.declared_faces(), quiet, [&](const Pipeline& pipeline) {
       return run_out_of_core(pipeline, source, input, mesh);
     });
   } else {
@@ -189,8 +288,10 @@ int run(int argc, char** argv) {
     // Before any work: a texture the picture needs and cannot read is bad input.
     if (snapshot) snapshot->renderer->prepare(mesh, read_report.materials);
     input_had_corner_values = cgal_policies::Corner_attributes<Point>(mesh).any_corner_values();
+    if (!request.lod_ratios.empty())
+      return run_lod_chain(request, {mesh, read_report, read_seconds, input_had_corner_values});
     if (measure || snapshot || options.fit || options.smoothing.bounded) original = mesh;
-    run = run_with_bar(mesh.number_of_faces(),
+    run = run_with_bar(options, mesh.number_of_faces(), quiet,
                        [&](const Pipeline& pipeline) { return pipeline.run(mesh, original); });
   }
   const std::string name = pipeline_name(options);

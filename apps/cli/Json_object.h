@@ -27,6 +27,13 @@ class Json_object {
     push(key, list + "]");
   }
 
+  // An array of objects, e.g. a report's per-level fields.
+  void add(const std::string& key, const std::vector<Json_object>& objects) {
+    std::string list = "[";
+    for (std::size_t i = 0; i < objects.size(); ++i) list += (i ? ", " : "") + objects[i].str();
+    push(key, list + "]");
+  }
+
   // Ten significant digits: stable across runs, and finer than any measurement we report.
   static std::string format_number(double value) {
     if (!std::isfinite(value)) return "null";

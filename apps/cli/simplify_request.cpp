@@ -1,6 +1,8 @@
 #include "simplify_request.h"
 
 #include "App_error.h"
+#include "io/mesh_io.h"
+#include "lod_chain.h"
 #include "out_of_core_run.h"
 #include "output_path.h"
 #include "pass_options.h"
@@ -57,6 +59,8 @@ Simplify_request take_simplify_request(Command_line& cli) {
   request.force = cli.take_flag("force");
   request.quiet = cli.take_flag("quiet");
   request.out_of_core = cli.take_flag("out-of-core");
+  const std::optional<std::string> lod = cli.take_value("lod");
+  if (lod) request.lod_ratios = parse_lod_ratios(*lod);
   const cgal_policies::Simplification_options& options = request.options;
   if (request.out_of_core && (!runs_out_of_core(options) || request.measure))
     throw App_error(exit_usage,
@@ -71,11 +75,24 @@ Simplify_request take_simplify_request(Command_line& cli) {
     if (ratio) throw App_error(exit_usage, "give RATIO or --ratio, not both");
     ratio = parse_number(args[2], "RATIO");
   }
-  request.options.target = face_target(ratio, pipeline.faces);
+  if (lod) {
+    if (ratio || pipeline.faces)
+      throw App_error(exit_usage, "--lod gives every level's ratio: no RATIO, --ratio or --faces");
+    if (request.out_of_core)
+      throw App_error(exit_usage,
+                      "--lod measures every level against IN, which --out-of-core "
+                      "never holds whole");
+    request.options.target = cgal_policies::Face_target::ratio(request.lod_ratios.front());
+  } else {
+    request.options.target = face_target(ratio, pipeline.faces);
+  }
   if (samples) request.samples = std::size_t(*samples);
   request.input = args[0];
   request.output = args[1];
-  check_output_path(request.input, request.output, request.force);
+  for (const std::string& output :
+       lod ? cgal_policies::io::lod_level_paths(request.output, request.lod_ratios.size())
+           : std::vector<std::string>{request.output})
+    check_output_path(request.input, output, request.force);
   return request;
 }
 

@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace apps {
 
@@ -33,11 +34,14 @@ struct Simplify_request {
   std::optional<std::size_t> samples;    // --samples of --measure
   bool json = false, measure = false, force = false, quiet = false;
   bool out_of_core = false;  // read IN in passes (run_streamed), never whole
+  // --lod: the chain's levels as shares of IN's faces, finest first (lod_chain.h); empty without.
+  std::vector<double> lod_ratios;
   std::string input, output;
 };
 
 // Takes every option of simplify but --help and the snapshot's, then IN OUT [RATIO]; App_error
-// with exit_usage (bad command line) or Io_error (OUT's folder is missing) otherwise.
+// with exit_usage (bad command line) or Io_error (OUT's folder is missing) otherwise. With --lod,
+// the target is the first level's and every level's file is checked (lod_level_paths).
 Simplify_request take_simplify_request(Command_line& cli);
 
 }  // namespace apps

@@ -1,6 +1,7 @@
 #include "Removed_on_interrupt.h"
 
 #include "Io_error.h"
+#include "atomic_write.h"
 
 #include <signal.h>
 #include <unistd.h>
@@ -23,8 +24,10 @@ struct Slot {
 };
 static_assert(std::atomic<int>::is_always_lock_free);
 
-// A few files at once at most: a temporary, and a finished picture waiting for its mesh.
-Slot g_slots[8];
+// A few files at once at most: the temporaries of write_all_atomically and the files it renamed
+// already (kMaxFilesWrittenAtOnce + 1 at its peak), and a finished picture waiting for its mesh.
+Slot g_slots[32];
+static_assert(std::size(g_slots) >= kMaxFilesWrittenAtOnce + 2);
 char g_message[256] = "interrupted\n";
 std::size_t g_message_length = std::strlen(g_message);
 

@@ -3,8 +3,10 @@
 #ifndef CGAL_POLICIES_IO_ATOMIC_WRITE_H
 #define CGAL_POLICIES_IO_ATOMIC_WRITE_H
 
+#include <cstddef>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace cgal_policies {
 namespace io {
@@ -16,6 +18,16 @@ namespace io {
 // temporary too (Removed_on_interrupt).
 void write_atomically(const std::string& path,
                       const std::function<bool(const std::string& temporary)>& write);
+
+// The same for several files, all or none: `write(i, temporary)` writes paths[i]'s temporary, for
+// every i, before any is renamed into place. When a write or a rename fails, or SIGINT or SIGTERM
+// comes before the last rename, no file of this call is left: the temporaries are removed, and so
+// are the files already renamed (which had replaced any older ones). Throws Io_error naming the
+// path that failed. At most kMaxFilesWrittenAtOnce paths.
+constexpr std::size_t kMaxFilesWrittenAtOnce = 16;
+void write_all_atomically(
+    const std::vector<std::string>& paths,
+    const std::function<bool(std::size_t index, const std::string& temporary)>& write);
 
 // Throws Io_error (unwritable output) naming `path` when its folder does not exist: the check
 // write_atomically makes, for the apps to make before they read any input.

@@ -638,6 +638,74 @@ void pass_looks_through(tinygltf::Model& model, const tinygltf::Model& looks,
   }
 }
 
+// A level's mesh: its wedges' attributes, its indices, and a primitive per material of `model`
+// (whose materials are in place), in the order of the material indices (none last), each of its
+// triangles in the mesh's order; every primitive shares the wedges.
+tinygltf::Mesh gltf_mesh(tinygltf::Model& model, const Wedge_mesh& wedges) {
+  tinygltf::Primitive shape;
+  shape.mode = TINYGLTF_MODE_TRIANGLES;
+  std::vector<float> positions;
+  for (const Point& p : wedges.points)
+    for (double c : {p.x(), p.y(), p.z()}) positions.push_back(float(c));
+  const int position = append_float_attribute(model, positions, TINYGLTF_TYPE_VEC3);
+  shape.attributes["POSITION"] = position;
+  // The spec requires the bounds of the positions, which are these floats'.
+  tinygltf::Accessor& bounds = model.accessors[std::size_t(position)];
+  bounds.minValues.assign(3, std::numeric_limits<double>::infinity());
+  bounds.maxValues.assign(3, -std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    bounds.minValues[i % 3] = std::min(bounds.minValues[i % 3], double(positions[i]));
+    bounds.maxValues[i % 3] = std::max(bounds.maxValues[i % 3], double(positions[i]));
+  }
+  if (!wedges.normals.empty()) {
+    std::vector<float> normals;
+    for (const Kernel::Vector_3& n : wedges.normals)
+      for (double c : {n.x(), n.y(), n.z()}) normals.push_back(float(c));
+    shape.attributes["NORMAL"] = append_float_attribute(model, normals, TINYGLTF_TYPE_VEC3);
+  }
+  if (!wedges.uvs.empty()) {
+    std::vector<float> uvs;
+    for (const auto& uv : wedges.uvs) {
+      const std::array<double, 2> flipped = texture_coordinates_of_gltf(uv[0], uv[1]);
+      uvs.insert(uvs.end(), {float(flipped[0]), float(flipped[1])});
+    }
+    shape.attributes["TEXCOORD_0"] = append_float_attribute(model, uvs, TINYGLTF_TYPE_VEC2);
+  }
+  if (!wedges.colors.empty()) {
+    std::vector<float> colors;
+    for (const auto& color : wedges.colors)
+      for (double c : color) colors.push_back(float(c));
+    // A corner without a colour is white, which leaves the material's colour as it is.
+    shape.attributes["COLOR_0"] = append_float_attribute(model, colors, TINYGLTF_TYPE_VEC4, 1);
+  }
+
+  std::map<std::uint32_t, std::vector<std::uint32_t>> indices_of_material;
+  for (std::size_t t = 0; t < wedges.triangles.size(); ++t) {
+    const std::uint32_t material =
+        wedges.materials.empty() ? Corner_tables::kNoMaterial : wedges.materials[t];
+    auto& indices = indices_of_material[material];
+    indices.insert(indices.end(), wedges.triangles[t].begin(), wedges.triangles[t].end());
+  }
+  std::vector<std::uint32_t> all_indices;
+  for (const auto& group : indices_of_material)
+    all_indices.insert(all_indices.end(), group.second.begin(), group.second.end());
+  const int index_view =
+      append_view(model, all_indices.data(), all_indices.size() * sizeof(std::uint32_t),
+                  TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+  tinygltf::Mesh mesh;
+  std::size_t offset = 0;
+  for (const auto& [material, indices] : indices_of_material) {
+    tinygltf::Primitive primitive = shape;
+    primitive.indices =
+        append_accessor(model, index_view, offset * sizeof(std::uint32_t),
+                        TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, indices.size());
+    primitive.material = material < model.materials.size() ? int(material) : -1;
+    offset += indices.size();
+    mesh.primitives.push_back(std::move(primitive));
+  }
+  return mesh;
+}
+
 }  // namespace
 
 Gltf_soup read_gltf(const std::string& path, bool binary) {
@@ -695,89 +763,44 @@ Gltf_soup read_gltf(const std::string& path, bool binary) {
   return read;
 }
 
-std::string gltf_bytes(const Mesh& mesh, bool binary, const Material_references& materials,
-                       const std::string& output_folder, std::vector<std::string>& left_out) {
-  const Wedge_mesh wedges = wedge_mesh(mesh);
+std::string gltf_bytes(const std::vector<Lod_level>& levels, bool binary,
+                       const Material_references& materials, const std::string& output_folder,
+                       std::vector<std::string>& left_out) {
+  std::vector<Wedge_mesh> wedges;
+  for (const Lod_level& level : levels) wedges.push_back(wedge_mesh(*level.mesh));
   tinygltf::Model model;
   model.asset.version = "2.0";
   model.asset.generator = "cgal_policies";
   model.buffers.resize(1);
-  tinygltf::Primitive shape;
-  shape.mode = TINYGLTF_MODE_TRIANGLES;
-
-  std::vector<float> positions;
-  for (const Point& p : wedges.points)
-    for (double c : {p.x(), p.y(), p.z()}) positions.push_back(float(c));
-  const int position = append_float_attribute(model, positions, TINYGLTF_TYPE_VEC3);
-  shape.attributes["POSITION"] = position;
-  // The spec requires the bounds of the positions, which are these floats'.
-  tinygltf::Accessor& bounds = model.accessors[std::size_t(position)];
-  bounds.minValues.assign(3, std::numeric_limits<double>::infinity());
-  bounds.maxValues.assign(3, -std::numeric_limits<double>::infinity());
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    bounds.minValues[i % 3] = std::min(bounds.minValues[i % 3], double(positions[i]));
-    bounds.maxValues[i % 3] = std::max(bounds.maxValues[i % 3], double(positions[i]));
-  }
-  if (!wedges.normals.empty()) {
-    std::vector<float> normals;
-    for (const Kernel::Vector_3& n : wedges.normals)
-      for (double c : {n.x(), n.y(), n.z()}) normals.push_back(float(c));
-    shape.attributes["NORMAL"] = append_float_attribute(model, normals, TINYGLTF_TYPE_VEC3);
-  }
-  if (!wedges.uvs.empty()) {
-    std::vector<float> uvs;
-    for (const auto& uv : wedges.uvs) {
-      const std::array<double, 2> flipped = texture_coordinates_of_gltf(uv[0], uv[1]);
-      uvs.insert(uvs.end(), {float(flipped[0]), float(flipped[1])});
-    }
-    shape.attributes["TEXCOORD_0"] = append_float_attribute(model, uvs, TINYGLTF_TYPE_VEC2);
-  }
-  if (!wedges.colors.empty()) {
-    std::vector<float> colors;
-    for (const auto& color : wedges.colors)
-      for (double c : color) colors.push_back(float(c));
-    // A corner without a colour is white, which leaves the material's colour as it is.
-    shape.attributes["COLOR_0"] = append_float_attribute(model, colors, TINYGLTF_TYPE_VEC4, 1);
-  }
-
-  // A texture needs texture coordinates to be drawn with (and the spec requires them).
+  // A texture needs texture coordinates to be drawn with (and the spec requires them); every
+  // level carries the same kinds of values as the first.
   const std::shared_ptr<const tinygltf::Model> looks =
       materials.gltf ? materials.gltf
-                     : obj_material_looks(materials, !wedges.uvs.empty(), left_out);
+                     : obj_material_looks(materials, !wedges.front().uvs.empty(), left_out);
   pass_looks_through(model, *looks, fs::absolute(output_folder).lexically_normal());
-
-  // One primitive per material, in the order of the material indices (none last), each of its
-  // triangles in the mesh's order; every primitive shares the wedges.
-  std::map<std::uint32_t, std::vector<std::uint32_t>> indices_of_material;
-  for (std::size_t t = 0; t < wedges.triangles.size(); ++t) {
-    const std::uint32_t material =
-        wedges.materials.empty() ? Corner_tables::kNoMaterial : wedges.materials[t];
-    auto& indices = indices_of_material[material];
-    indices.insert(indices.end(), wedges.triangles[t].begin(), wedges.triangles[t].end());
+  for (const Wedge_mesh& level : wedges) {
+    model.meshes.push_back(gltf_mesh(model, level));
+    model.nodes.emplace_back();
+    model.nodes.back().mesh = int(model.meshes.size() - 1);
   }
-  std::vector<std::uint32_t> all_indices;
-  for (const auto& group : indices_of_material)
-    all_indices.insert(all_indices.end(), group.second.begin(), group.second.end());
-  const int index_view =
-      append_view(model, all_indices.data(), all_indices.size() * sizeof(std::uint32_t),
-                  TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-  tinygltf::Mesh gltf_mesh;
-  std::size_t offset = 0;
-  for (const auto& [material, indices] : indices_of_material) {
-    tinygltf::Primitive primitive = shape;
-    primitive.indices =
-        append_accessor(model, index_view, offset * sizeof(std::uint32_t),
-                        TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, indices.size());
-    primitive.material = material < model.materials.size() ? int(material) : -1;
-    offset += indices.size();
-    gltf_mesh.primitives.push_back(std::move(primitive));
-  }
-  model.meshes.push_back(std::move(gltf_mesh));
-  model.nodes.emplace_back();
-  model.nodes.back().mesh = 0;
+  // The finest level is the scene's; the others are reached through its MSFT_lod alone.
   model.scenes.emplace_back();
   model.scenes.back().nodes.push_back(0);
   model.defaultScene = 0;
+  if (levels.size() > 1) {
+    tinygltf::Value::Array coarser, coverage;
+    for (std::size_t k = 0; k < levels.size(); ++k) {
+      if (k > 0) coarser.emplace_back(int(k));
+      coverage.emplace_back(levels[k].screen_coverage);
+    }
+    model.nodes[0].extensions["MSFT_lod"] =
+        tinygltf::Value(tinygltf::Value::Object{{"ids", tinygltf::Value(std::move(coarser))}});
+    model.nodes[0].extras = tinygltf::Value(
+        tinygltf::Value::Object{{"MSFT_screencoverage", tinygltf::Value(coverage)}});
+    // A glTF input's looks may declare it already (a material's levels of detail).
+    std::vector<std::string>& used = model.extensionsUsed;
+    if (std::find(used.begin(), used.end(), "MSFT_lod") == used.end()) used.push_back("MSFT_lod");
+  }
 
   tinygltf::TinyGLTF writer;
   // Every image is a uri or a bufferView already: none to encode.

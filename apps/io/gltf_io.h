@@ -42,19 +42,23 @@ struct Gltf_soup {
 // coordinate or colour that is not finite.
 Gltf_soup read_gltf(const std::string& path, bool binary);
 
-// The bytes of a glTF file (GLB when `binary`) of `mesh`: one vertex per wedge (Wedge_mesh.h),
-// float32 positions, normals, texture coordinates (v made 1 - v, as glTF counts it from the
-// image's top) and RGBA colours (glTF has no doubles; a corner
-// without a value gets 0, or white for a colour, as glTF has no "none"), u32 indices, one
-// primitive per material in the order of the material indices. Materials: those of
-// `materials.gltf` when the mesh was read from glTF, passed through with their textures, samplers
-// and images (an image the input held is embedded, an image file is named by its path relative to
-// `output_folder`); otherwise those of obj_material_looks (obj_material_looks.h), their diffuse
-// maps embedded as base colour textures when the mesh has texture coordinates, and `left_out`
-// gets a line for each map left out. A .gltf file holds its buffer, embedded images included, as
-// a base64 data URI.
-std::string gltf_bytes(const Mesh& mesh, bool binary, const Material_references& materials,
-                       const std::string& output_folder, std::vector<std::string>& left_out);
+// The bytes of a glTF file (GLB when `binary`) holding `levels`, each a mesh of its own and a node
+// holding it: one vertex per wedge (Wedge_mesh.h), float32 positions, normals, texture coordinates
+// (v made 1 - v, as glTF counts it from the image's top) and RGBA colours (glTF has no doubles; a
+// corner without a value gets 0, or white for a colour, as glTF has no "none"), u32 indices, one
+// primitive per material in the order of the material indices. The scene holds the first level's
+// node; with more than one level, that node carries MSFT_lod (the extension Microsoft and
+// Babylon.js read; used, not required, so that other viewers show the first level) naming the
+// other levels' nodes in order, and extras.MSFT_screencoverage their screen coverages, one per
+// level. Materials, shared by the levels: those of `materials.gltf` when the mesh was read from
+// glTF, passed through with their textures, samplers and images (an image the input held is
+// embedded, an image file is named by its path relative to `output_folder`); otherwise those of
+// obj_material_looks (obj_material_looks.h), their diffuse maps embedded as base colour textures
+// when the meshes have texture coordinates, and `left_out` gets a line for each map left out. A
+// .gltf file holds its buffer, embedded images included, as a base64 data URI.
+std::string gltf_bytes(const std::vector<Lod_level>& levels, bool binary,
+                       const Material_references& materials, const std::string& output_folder,
+                       std::vector<std::string>& left_out);
 
 }  // namespace io
 }  // namespace cgal_policies

@@ -173,6 +173,44 @@ Polygon_soup read_soup(const std::string& path, const std::string& extension,
                                : parse_ply(path, bytes);
 }
 
+bool write_bytes(const std::string& path, const std::string& bytes) {
+  std::ofstream file(path, std::ios::binary);
+  file.write(bytes.data(), std::streamsize(bytes.size()));
+  return bool(file.flush());
+}
+
+// One glTF file holding the levels (gltf_bytes); returns the textures left out.
+std::vector<std::string> write_gltf_atomically(const std::vector<Lod_level>& levels,
+                                               const std::string& path,
+                                               const Material_references& materials) {
+  std::vector<std::string> left_out;
+  const std::string bytes = gltf_bytes(levels, lower_extension(path) == ".glb", materials,
+                                       fs::absolute(path).parent_path().string(), left_out);
+  write_atomically(path,
+                   [&](const std::string& temporary) { return write_bytes(temporary, bytes); });
+  return left_out;
+}
+
+// Level k into paths[k], all or none, in any format but glTF (write_mesh_atomically).
+void write_files_atomically(const std::vector<Lod_level>& levels,
+                            const std::vector<std::string>& paths,
+                            const Material_references& materials) {
+  write_all_atomically(paths, [&](std::size_t k, const std::string& temporary) {
+    const Mesh& mesh = *levels[k].mesh;
+    const std::string extension = lower_extension(paths[k]);
+    if (extension == ".obj" && Attributes(mesh).any()) {
+      const fs::path folder = fs::absolute(paths[k]).parent_path();
+      std::vector<std::string> libraries;
+      for (const std::string& library : materials.libraries)
+        libraries.push_back(fs::path(library).lexically_relative(folder).string());
+      return write_bytes(temporary, obj_text(mesh, libraries, materials.names));
+    }
+    if (extension == ".ply" && Attributes(mesh).any_corner_values())
+      return write_bytes(temporary, ply_bytes(wedge_mesh(mesh)));
+    return CGAL::IO::write_polygon_mesh(temporary, mesh, CGAL::parameters::stream_precision(17));
+  });
+}
+
 }  // namespace
 
 std::string lower_extension(const std::string& path) {
@@ -257,34 +295,30 @@ Mesh triangle_mesh_from_soup(const std::string& path, std::vector<Point>& points
 
 std::vector<std::string> write_mesh_atomically(const Mesh& mesh, const std::string& path,
                                                const Material_references& materials) {
-  const std::string extension = lower_extension(path);
-  const auto write_bytes = [&path](const std::string& bytes) {
-    write_atomically(path, [&](const std::string& temporary) {
-      std::ofstream file(temporary, std::ios::binary);
-      file.write(bytes.data(), std::streamsize(bytes.size()));
-      return bool(file.flush());
-    });
-  };
-  const fs::path folder = fs::absolute(path).parent_path();
-  if (is_gltf(extension)) {
-    std::vector<std::string> left_out;
-    write_bytes(gltf_bytes(mesh, extension == ".glb", materials, folder.string(), left_out));
-    return left_out;
-  }
-  if (extension == ".obj" && Attributes(mesh).any()) {
-    std::vector<std::string> libraries;
-    for (const std::string& library : materials.libraries)
-      libraries.push_back(fs::path(library).lexically_relative(folder).string());
-    write_bytes(obj_text(mesh, libraries, materials.names));
-    return {};
-  }
-  if (extension == ".ply" && Attributes(mesh).any_corner_values()) {
-    write_bytes(ply_bytes(wedge_mesh(mesh)));
-    return {};
-  }
-  write_atomically(path, [&](const std::string& temporary) {
-    return CGAL::IO::write_polygon_mesh(temporary, mesh, CGAL::parameters::stream_precision(17));
-  });
+  const std::vector<Lod_level> level = {{&mesh, 0}};
+  if (is_gltf(lower_extension(path))) return write_gltf_atomically(level, path, materials);
+  write_files_atomically(level, {path}, materials);
+  return {};
+}
+
+bool holds_lod_chain(const std::string& path) { return is_gltf(lower_extension(path)); }
+
+std::vector<std::string> lod_level_paths(const std::string& path, std::size_t levels) {
+  if (holds_lod_chain(path)) return {path};
+  const fs::path file(path);
+  std::vector<std::string> paths;
+  for (std::size_t k = 0; k < levels; ++k)
+    paths.push_back((file.parent_path() / (file.stem().string() + "_lod" + std::to_string(k) +
+                                           file.extension().string()))
+                        .string());
+  return paths;
+}
+
+std::vector<std::string> write_lod_chain_atomically(const std::vector<Lod_level>& levels,
+                                                    const std::string& path,
+                                                    const Material_references& materials) {
+  if (holds_lod_chain(path)) return write_gltf_atomically(levels, path, materials);
+  write_files_atomically(levels, lod_level_paths(path, levels.size()), materials);
   return {};
 }
 

@@ -73,6 +73,30 @@ Mesh triangle_mesh_from_soup(const std::string& source, std::vector<Point>& poin
 std::vector<std::string> write_mesh_atomically(const Mesh& mesh, const std::string& path,
                                                const Material_references& materials = {});
 
+// A level of a chain of levels of detail (write_lod_chain_atomically): its mesh, and the share of
+// the screen's area below which a viewer switches to the next coarser level (glTF's
+// MSFT_screencoverage; 0: never culled).
+struct Lod_level {
+  const Mesh* mesh;
+  double screen_coverage;
+};
+
+// Whether write_lod_chain_atomically writes every level into `path` itself (glTF).
+bool holds_lod_chain(const std::string& path);
+
+// The files write_lod_chain_atomically writes for `levels` levels of `path`: `path` alone when it
+// holds them all; otherwise a file per level, its stem followed by _lod0 (the finest), _lod1, ...:
+// out.obj gives out_lod0.obj, out_lod1.obj, ...
+std::vector<std::string> lod_level_paths(const std::string& path, std::size_t levels);
+
+// Writes a chain of levels of detail, finest first, into lod_level_paths(path, levels.size()),
+// all or none (write_all_atomically), each as write_mesh_atomically writes a mesh; a glTF file
+// holds every level (gltf_bytes: MSFT_lod). Returns what the files were written without, as
+// write_mesh_atomically does. At most kMaxFilesWrittenAtOnce levels.
+std::vector<std::string> write_lod_chain_atomically(const std::vector<Lod_level>& levels,
+                                                    const std::string& path,
+                                                    const Material_references& materials = {});
+
 }  // namespace io
 }  // namespace cgal_policies
 

@@ -82,6 +82,16 @@ double json_number(const std::string& json, const std::string& field) {
   return std::stod(match[1]);
 }
 
+// Every value of a number field of an app's JSON, in order (a report's levels each have one).
+std::vector<double> json_numbers(const std::string& json, const std::string& field) {
+  std::vector<double> numbers;
+  const std::regex pattern("\"" + field + "\": ([-+.e0-9]+)");
+  for (auto it = std::sregex_iterator(json.begin(), json.end(), pattern);
+       it != std::sregex_iterator(); ++it)
+    numbers.push_back(std::stod((*it)[1]));
+  return numbers;
+}
+
 class Cli : public testing::Test {
  protected:
   void SetUp() override {
@@ -1169,6 +1179,138 @@ TEST_F(Cli, OutOfCoreReadsBinaryPlyAndObjAlike) {
               outputs[1].substr(outputs[1].find("end_header")))
       << "the PLY and the OBJ gave different outputs";
   EXPECT_TRUE(fs::is_empty(spill));
+}
+
+// A closed sphere of 320 faces, which loses two faces a collapse: every even target is met
+// exactly.
+fs::path write_sphere(const fs::path& path) {
+  const test_meshes::Mesh sphere = test_meshes::loop_sphere(2);
+  EXPECT_TRUE(
+      CGAL::IO::write_polygon_mesh(path.string(), sphere, CGAL::parameters::stream_precision(17)));
+  return path;
+}
+
+// --lod with an OBJ or PLY OUT: a file per level, OUT's stem with _lod0, _lod1, ..., each level
+// with exactly its share of IN's faces and made from the level before, as the JSON says.
+TEST_F(Cli, LodWritesAFilePerLevelWithItsShareOfTheFaces) {
+  const fs::path in = write_sphere(file("sphere.off"));
+  const Command_result r = run("simplify", in.string() + " " + file("out.ply").string() +
+                                               " --lod 0.5,0.25,0.1 --json --samples 2000");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(file("out.ply")));
+  const std::vector<double> faces = {160, 80, 32};
+  for (std::size_t k = 0; k < faces.size(); ++k) {
+    const fs::path level = file("out_lod" + std::to_string(k) + ".ply");
+    EXPECT_NE(r.out.find("\"output\": \"" + level.string() + "\""), std::string::npos) << r.out;
+    EXPECT_EQ(double(apps::read_triangle_mesh(level.string()).number_of_faces()), faces[k]);
+  }
+  EXPECT_FALSE(fs::exists(file("out_lod3.ply")));
+  EXPECT_EQ(json_numbers(r.out, "level"), std::vector<double>({0, 1, 2})) << r.out;
+  EXPECT_EQ(json_numbers(r.out, "ratio"), std::vector<double>({0.5, 0.25, 0.1})) << r.out;
+  EXPECT_EQ(json_numbers(r.out, "output_faces"), faces) << r.out;
+  // IN's, then each level's input: the level before it.
+  EXPECT_EQ(json_numbers(r.out, "input_faces"), std::vector<double>({320, 320, 160, 80})) << r.out;
+  EXPECT_EQ(json_numbers(r.out, "hausdorff").size(), 3u) << r.out;
+  EXPECT_EQ(json_numbers(r.out, "total_seconds").size(), 3u) << r.out;
+  EXPECT_EQ(r.out.find("\"node\": "), std::string::npos) << r.out;  // a glTF OUT's alone
+}
+
+// The chain on bob, textured: each level within the error of the next coarser one, against IN, and
+// its texture seams kept.
+TEST_F(Cli, LodLevelsNeverHaveMoreErrorThanTheNextCoarserOne) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const Command_result r =
+      run("simplify", test_meshes::data_file("bob_tri.obj") + " " + file("bob.obj").string() +
+                          " --lod 0.5,0.25,0.1,0.03 --json --samples 20000");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(json_numbers(r.out, "output_faces"), std::vector<double>({5344, 2672, 1068, 320}))
+      << r.out;
+  for (const char* measure : {"hausdorff", "mean_a_to_b", "mean_b_to_a", "rms"}) {
+    SCOPED_TRACE(measure);
+    const std::vector<double> errors = json_numbers(r.out, measure);
+    ASSERT_EQ(errors.size(), 4u) << r.out;
+    EXPECT_GT(errors[0], 0);
+    for (std::size_t k = 0; k + 1 < errors.size(); ++k) EXPECT_LE(errors[k], errors[k + 1]);
+  }
+  EXPECT_EQ(json_numbers(r.out, "flipped_uv_faces"), std::vector<double>(4, 0)) << r.out;
+  EXPECT_EQ(json_numbers(r.out, "seam_loops_b"), json_numbers(r.out, "seam_loops_a")) << r.out;
+  EXPECT_NE(r.out.find("\"attributes\": \"carried\""), std::string::npos) << r.out;
+}
+
+// A glTF OUT holds every level: a mesh and a node each, the scene's node (the finest level)
+// naming the others with MSFT_lod and giving their screen coverages.
+TEST_F(Cli, LodGlbHoldsEveryLevelUnderMsftLod) {
+  const fs::path in = write_sphere(file("sphere.off")), out = file("out.glb");
+  const Command_result r = run("simplify", in.string() + " " + out.string() +
+                                               " --lod 0.5,0.25,0.1 --json --quiet --samples 2000");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(file("out_lod0.glb")));
+  tinygltf::Model model;
+  std::string error, warning;
+  ASSERT_TRUE(tinygltf::TinyGLTF().LoadBinaryFromFile(&model, &error, &warning, out.string()))
+      << error;
+  EXPECT_EQ(model.extensionsUsed, std::vector<std::string>({"MSFT_lod"}));
+  EXPECT_TRUE(model.extensionsRequired.empty());
+  ASSERT_EQ(model.scenes.size(), 1u);
+  EXPECT_EQ(model.scenes[0].nodes, std::vector<int>({0}));
+  const std::vector<std::size_t> faces = {160, 80, 32};
+  ASSERT_EQ(model.nodes.size(), faces.size());
+  ASSERT_EQ(model.meshes.size(), faces.size());
+  for (std::size_t k = 0; k < faces.size(); ++k) {
+    EXPECT_EQ(model.nodes[k].mesh, int(k));
+    std::size_t indices = 0;
+    for (const tinygltf::Primitive& primitive : model.meshes[k].primitives)
+      indices += model.accessors[std::size_t(primitive.indices)].count;
+    EXPECT_EQ(indices, 3 * faces[k]) << "level " << k;
+  }
+  const tinygltf::Value& ids = model.nodes[0].extensions.at("MSFT_lod").Get("ids");
+  ASSERT_TRUE(ids.IsArray());
+  ASSERT_EQ(ids.ArrayLen(), 2u);
+  EXPECT_EQ(ids.Get(0).GetNumberAsInt(), 1);
+  EXPECT_EQ(ids.Get(1).GetNumberAsInt(), 2);
+  for (std::size_t k = 1; k < faces.size(); ++k) EXPECT_TRUE(model.nodes[k].extensions.empty());
+  // Level k suits ratio_k / ratio_0 of the screen: each gives way where the next suffices.
+  const tinygltf::Value& coverage = model.nodes[0].extras.Get("MSFT_screencoverage");
+  ASSERT_TRUE(coverage.IsArray());
+  ASSERT_EQ(coverage.ArrayLen(), 3u);
+  EXPECT_DOUBLE_EQ(coverage.Get(0).GetNumberAsDouble(), 0.5);
+  EXPECT_DOUBLE_EQ(coverage.Get(1).GetNumberAsDouble(), 0.2);
+  EXPECT_DOUBLE_EQ(coverage.Get(2).GetNumberAsDouble(), 0);
+  EXPECT_EQ(json_numbers(r.out, "node"), std::vector<double>({0, 1, 2})) << r.out;
+  EXPECT_EQ(json_numbers(r.out, "screen_coverage"), std::vector<double>({0.5, 0.2, 0})) << r.out;
+  // A reader without MSFT_lod, ours included, sees the finest level.
+  EXPECT_EQ(apps::read_gltf(out.string(), true).soup.polygons.size(), faces[0]);
+}
+
+// A bad --lod is one usage line naming it, before IN is read (it does not exist here: reading it
+// would fail with 3), and no file.
+TEST_F(Cli, BadLodValuesAreOneUsageLineAndNoFile) {
+  const fs::path in = file("missing.off"), out = file("out.obj");
+  for (const char* lod :
+       {"''", "0.5,0.5", "0.1,0.25", "0", "-0.5", "1.5", "0.5,abc", "0.5,,0.1", "x",
+        "1,0.9,0.8,0.7,0.6,0.5,0.4,0.3,0.2,0.1,0.09,0.08,0.07,0.06,0.05,0.04,0.03", "0.5,0.25 0.5",
+        "0.5,0.25 --faces 10"}) {
+    SCOPED_TRACE(lod);
+    expect_failure(in.string() + " " + out.string() + " --lod " + std::string(lod),
+                   apps::exit_usage, "--lod", out);
+    EXPECT_FALSE(fs::exists(file("out_lod0.obj")));
+  }
+  const fs::path sphere = write_sphere(file("sphere_lod1.off"));
+  expect_failure(sphere.string() + " " + out.string() + " --lod 0.5 --out-of-core",
+                 apps::exit_usage, "--lod", out);
+  // Level 1's file would be IN.
+  expect_failure(sphere.string() + " " + file("sphere.off").string() + " --lod 0.5,0.25",
+                 apps::exit_usage, sphere, file("sphere_lod0.off"));
+}
+
+// The level files land all together or not at all: when level 1's cannot be put in place, level
+// 0's, written already, is removed again, and no temporary is left.
+TEST_F(Cli, LodFilesLandAllOrNone) {
+  const fs::path in = write_sphere(file("sphere.off"));
+  fs::create_directories(file("out_lod1.obj"));
+  expect_failure(in.string() + " " + file("out.obj").string() + " --lod 0.5,0.25,0.1 --quiet",
+                 apps::exit_bad_output, file("out_lod1.obj"), file("out_lod0.obj"));
+  EXPECT_FALSE(fs::exists(file("out_lod2.obj")));
 }
 
 // What --out-of-core cannot read is one bad-input line naming the file, and what it cannot do

@@ -2,9 +2,10 @@
 # The ctest test gltf_validator: simplify writes each shipped textured mesh (bob's map_Kd
 # embedded), the vertex-colour PLY and glTF files other tools made (gltfpack, gltf-pipeline's
 # Draco) as .glb and .gltf, bob with its texture missing, then bob with its texture as a data URI,
-# and the Khronos glTF-Validator (validate_gltf.mjs) must find no error in any of them; its
-# warnings are printed. Exits 77, which ctest counts as skipped, without node or the validator, and in CI's
-# sanitized pass (CGAL_POLICIES_SKIP_REAL_MESHES: the Release pass runs the real meshes).
+# then bob as a chain of levels of detail (--lod, MSFT_lod), and the Khronos glTF-Validator
+# (validate_gltf.mjs) must find no error in any of them; its warnings are printed. Exits 77, which
+# ctest counts as skipped, without node or the validator, and in CI's sanitized pass
+# (CGAL_POLICIES_SKIP_REAL_MESHES: the Release pass runs the real meshes).
 #
 #   validate_outputs.sh SIMPLIFY SOURCE_DIR NODE_MODULES WORK_DIR
 set -euo pipefail
@@ -49,4 +50,16 @@ for extension in glb gltf; do
   "$simplify" "$work/bob_textured_input.gltf" "$work/bob_textured.$extension" 0.5 --quiet
   outputs+=("$work/bob_textured.$extension")
 done
+# A chain of levels of detail in one file (MSFT_lod), textured: bob with its map_Kd embedded; the
+# finest level's node must name the three coarser ones.
+for extension in glb gltf; do
+  "$simplify" "$source/data/bob_tri.obj" "$work/bob_lod.$extension" --lod 0.5,0.25,0.1,0.03 --quiet
+  outputs+=("$work/bob_lod.$extension")
+done
+node -e 'const g = JSON.parse(require("fs").readFileSync(process.argv[1]));
+  const ids = JSON.stringify(g.nodes[0].extensions.MSFT_lod.ids);
+  if (ids !== "[1,2,3]" || g.nodes[0].extras.MSFT_screencoverage.length !== 4) {
+    console.error(`${process.argv[1]}: MSFT_lod ids ${ids}, expected [1,2,3] and 4 coverages`);
+    process.exit(1);
+  }' "$work/bob_lod.gltf"
 node "$(dirname "$0")/validate_gltf.mjs" --modules "$modules" "${outputs[@]}"
