@@ -692,6 +692,26 @@ TEST_F(Cli, AnInterruptWhileWritingLeavesTheOldOutputAndNoTemporary) {
   }
 }
 
+// --lod writes every level's temporary before it renames any: an interrupt while level 1's is
+// written leaves level 0's older file as it was, and no temporary (level 0's is complete by then).
+TEST_F(Cli, AnInterruptWhileWritingALevelLeavesTheOlderLevelsAndNoTemporary) {
+  const fs::path out = file("cow.off"), level_0 = file("cow_lod0.off");
+  const std::string old_level = "an older level";
+  std::ofstream(level_0, std::ios::binary) << old_level;
+  const int status =
+      interrupt_while_writing({test_meshes::data_file("cow.obj"), out.string(), "--lod", "0.5,0.25",
+                               "--policy", "classic", "--quiet"},
+                              file("cow_lod1.off"), SIGTERM);
+  ASSERT_TRUE(WIFEXITED(status)) << "status " << status;
+  EXPECT_EQ(WEXITSTATUS(status), 128 + SIGTERM);
+  EXPECT_EQ(read_text(level_0), old_level);
+  EXPECT_FALSE(fs::exists(file("cow_lod1.off")));
+  EXPECT_FALSE(fs::exists(out));
+  for (const auto& entry : fs::directory_iterator(m_dir))
+    EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos)
+        << "temporary file left behind: " << entry.path();
+}
+
 // Two tetrahedra, which no collapse can simplify, and nothing else.
 const char* const kTwoTetrahedraOff =
     "OFF\n8 8 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n5 0 0\n6 0 0\n5 1 0\n5 0 1\n"
