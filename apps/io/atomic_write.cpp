@@ -61,10 +61,12 @@ void write_all_atomically(
     for (const fs::path& temporary : temporaries) fs::remove(temporary, ec);
     fail_output(paths[i], "cannot write: " + cause);
   };
-  // Each held from before its file exists until after it is renamed: no moment without a guard.
+  // Each held from before any file exists (a guard that cannot be made throws with none written)
+  // until after its file is renamed: no moment without a guard.
   std::vector<std::unique_ptr<Removed_on_interrupt>> temporary_guards;
+  for (const fs::path& temporary : temporaries)
+    temporary_guards.push_back(std::make_unique<Removed_on_interrupt>(temporary.string()));
   for (std::size_t i = 0; i < paths.size(); ++i) {
-    temporary_guards.push_back(std::make_unique<Removed_on_interrupt>(temporaries[i].string()));
     {
       std::ofstream probe(temporaries[i]);
       if (!probe) fail_all(i, std::strerror(errno));
