@@ -45,7 +45,9 @@ void print_help() {
          "                        keeps Rk of IN's faces, made from level k - 1 by the same\n"
          "                        pipeline; a glTF OUT holds every level (MSFT_lod), any\n"
          "                        other OUT becomes OUT_lod0, OUT_lod1, ... (all or none);\n"
-         "                        each level is measured against IN; at most 16 levels\n"
+         "                        each level is measured against IN; at most "
+      << kMaxFilesWrittenAtOnce
+      << " levels\n"
          "  --policy NAME         "
       << policy_names()
       << " (default: the default pipeline,\n"
