@@ -39,7 +39,7 @@ class Hausdorff_bounded_cost {
   void initialize(const TriangleMesh& tm, const VertexPointMap& vpm,
                   const GeomTraits& traits) const {
     m_quadrics.initialize(tm, vpm, traits);
-    m_state->attach_to_itself(tm, vpm);
+    m_state->attach(tm, vpm);
   }
 
   template <typename Profile, typename VertexDescriptor>

@@ -2,13 +2,16 @@
 // tau of the input in two-sided Hausdorff distance ([Liu17] §2.3: accept when the best distance
 // <= lambda * alpha, lambda = psi(M0) * beta; docs/hausdorff.md). Within Hausdorff_bounded_policies
 // it picks among the K + 1 points along the edge and the placement; alone, around any cost and
-// placement, it certifies only the placement, against the mesh as it was when built. It decorates
-// a base filter, run first, and must be the outermost: what it accepts is taken as collapsed.
+// placement, it certifies only the placement, against the mesh as it was when built, or against
+// another reference that mesh approximates. It decorates a base filter, run first, and must be
+// the outermost: what it accepts is taken as collapsed.
 // Parameters (alone):
-//   tm           the mesh to simplify, also the reference (as it is now)
-//   tolerance    tau as a fraction of the diagonal D of tm's bounding box, > 0
-//   base_filter  runs first (default: accepts everything)
-//   vpm          tm's vertex point map (default: get(CGAL::vertex_point, tm))
+//   tm             the mesh to simplify, also the reference (as it is now) unless one is given
+//   reference      the mesh tm must stay within tau of, tm being within tau of it already (the
+//                  stitched parts of a partitioned run and their input), with reference_vpm
+//   tolerance      tau as a fraction of the diagonal D of the reference's bounding box, > 0
+//   base_filter    runs first (default: accepts everything)
+//   vpm            tm's vertex point map (default: get(CGAL::vertex_point, tm))
 // Usage (alone, bounding any policy to 0.5% of D):
 //   cgal_policies::Hausdorff_bounded_filter<Mesh, Kernel> bound(mesh, 0.005);
 //   SMS::edge_collapse(mesh, stop, CGAL::parameters::get_cost(c).get_placement(p).filter(bound));
@@ -54,13 +57,20 @@ class Hausdorff_bounded_filter {
   template <typename VertexPointMap>
   Hausdorff_bounded_filter(TriangleMesh& tm, double tolerance, const BaseFilter& base_filter,
                            const VertexPointMap& vpm)
-      : m_owned_state(
-            std::make_shared<Shared_state>(tm, vpm, tm, tolerance, Hausdorff_bounded_options())),
+      : Hausdorff_bounded_filter(tm, tm, vpm, tolerance, base_filter, vpm) {}
+
+  // Alone, against `reference`.
+  template <typename ReferencePointMap, typename VertexPointMap>
+  Hausdorff_bounded_filter(TriangleMesh& tm, const TriangleMesh& reference,
+                           const ReferencePointMap& reference_vpm, double tolerance,
+                           const BaseFilter& base_filter, const VertexPointMap& vpm)
+      : m_owned_state(std::make_shared<Shared_state>(reference, reference_vpm, tm, tolerance,
+                                                     Hausdorff_bounded_options())),
         m_state(m_owned_state.get()),
         m_search(false),
         m_base_filter(base_filter) {
     CGAL_precondition(tolerance > 0);
-    m_state->attach_to_itself(tm, vpm);
+    m_state->attach(tm, vpm);
     m_state->defer_commits();
   }
 

@@ -68,7 +68,16 @@ class Hausdorff_bounded_policies {
   template <typename VertexPointMap>
   Hausdorff_bounded_policies(TriangleMesh& tm, const Hausdorff_bounded_options& options,
                              const VertexPointMap& vpm)
-      : m_state(tm, vpm, tm, options.alpha * options.beta, options),
+      : Hausdorff_bounded_policies(tm, tm, vpm, options) {}
+
+  // Against `reference` (vertex points reference_vpm) rather than tm as edge_collapse starts: tm
+  // approximates it within tau already (the stitched parts of a partitioned run and their input);
+  // in global mode the output stays within tau of the reference, whose diagonal is D.
+  template <typename ReferencePointMap>
+  Hausdorff_bounded_policies(TriangleMesh& tm, const TriangleMesh& reference,
+                             const ReferencePointMap& reference_vpm,
+                             const Hausdorff_bounded_options& options)
+      : m_state(reference, reference_vpm, tm, options.alpha * options.beta, options),
         m_quadrics(tm, Quadric_options{options.border_weight, Face_weighting::unit}),
         m_cost(&m_state, m_quadrics, options.order),
         m_placement(m_quadrics, options.border),

@@ -30,8 +30,7 @@
 //                         tolerance come from this struct)
 //   parts                 cells of a partitioned run (docs/scale.md), rounded down to a power
 //                         of two; 0: one per kFacesPerPart input faces (default), 1: none. A
-//                         partitioned run needs no max_error, no hausdorff and no on_collapse
-//                         (it runs whole otherwise)
+//                         run with on_collapse runs whole; a bound holds as in a whole run
 //   threads               cores for the parts, 0: all of them (default); the output is the same
 //                         for every count
 //   progress              called now and then with the pass running, how far it is in [0, 1], and
@@ -96,7 +95,7 @@ struct Simplification_options {
 
   // The cells a run on `input_faces` faces is cut into: 1 when it runs whole.
   std::size_t cell_count(std::size_t input_faces) const {
-    if (max_error > 0 || policy == Simplification_policy::hausdorff || on_collapse) return 1;
+    if (on_collapse) return 1;  // the viewer's replay numbers the vertices of one mesh
     const std::size_t wanted = parts > 0 ? parts : input_faces / kFacesPerPart;
     std::size_t cells = 1;
     while (2 * cells <= wanted) cells *= 2;

@@ -11,8 +11,10 @@
 // the library); the report: Simplification_report. Deterministic: the same mesh and options give
 // the same bytes, for any thread count. A large mesh is cut into cells (Simplification_options::
 // parts; docs/scale.md): the policy runs on each at once, cut vertices locked, then on the
-// stitched whole; the fit likewise. The interruption callback stops the run between collapses or
-// between passes, the mesh valid and simplified as far as it got. Usage:
+// stitched whole; the fit likewise, but under a bound. A bound holds as in a whole run: each part
+// is certified against itself as cut, the last pass against the mesh the parts were cut from. The
+// interruption callback stops the run between collapses or between passes, the mesh valid and
+// simplified as far as it got. Usage:
 //   cgal_policies::Simplification_options options;  // the library's default pipeline
 //   options.target = cgal_policies::Face_target::ratio(0.1);
 //   const cgal_policies::Simplification_report report =
@@ -37,6 +39,8 @@
 #include <cgal_policies/internal/run_quadric_policies.h>
 #include <cgal_policies/small_components.h>
 
+#include <CGAL/Bbox_3.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/assertions.h>
 
 #include <algorithm>
@@ -81,22 +85,27 @@ class Simplification_pipeline {
     timed(report, Simplification_pass::simplification, [&] {
       std::optional<internal::Policy_outcome> outcome;
       if (cells) {
-        const Simplification_options parts = part_options();
+        internal::collapse_zero_length_edges(mesh);
+        const double diagonal = diagonal_of(mesh);
+        const std::optional<Mesh> input_as_cut =
+            keeps_input_as_cut() ? std::optional<Mesh>(mesh) : std::nullopt;
         outcome = internal::run_partitioned(
             mesh, report.target_faces, *cells, m_options.threads, [&](Mesh& m, std::size_t target) {
-              return run_policy(m, target, &m == &mesh ? m_options : parts);
+              return &m == &mesh ? run_over_stitched(m, target, input_as_cut, diagonal)
+                                 : run_on_part(m, target, diagonal);
             });
       }
       if (!outcome) {
         report.parts = 1;
-        outcome = run_policy(mesh, report.target_faces, m_options);
+        outcome = run_policy(mesh, report.target_faces, m_options, nullptr);
       }
       report.stop_reason = outcome->stop_reason;
       report.attributes_carried = outcome->attributes_carried;
     });
     finish(report, mesh, input, [&](const Two_sided_fit_options& fit) {
-      return report.parts > 1 ? internal::fit_by_cells(mesh, input, *cells, m_options.threads, fit)
-                              : internal::fit_carrying_corner_values(mesh, input, fit);
+      return report.parts > 1 && fits_by_cells()
+                 ? internal::fit_by_cells(mesh, input, *cells, m_options.threads, fit)
+                 : internal::fit_carrying_corner_values(mesh, input, fit);
     });
     return report;
   }
@@ -131,12 +140,14 @@ class Simplification_pipeline {
         return internal::streamed_part(input.points, vertex_cell, spilled->read(c));
       };
     };
-    const Simplification_options parts = part_options();
+    const double diagonal =
+        internal::diagonal_length(CGAL::bbox_3(input.points.begin(), input.points.end()));
     const std::optional<internal::Policy_outcome> outcome = internal::run_parts(
         cells.size(), input.faces, input.points.size(), report.target_faces, m_options.threads,
         input_parts(spills),
         [&](Mesh& m, std::size_t target) {
-          return run_policy(m, target, &m == &mesh ? m_options : parts);
+          return &m == &mesh ? run_over_stitched(m, target, std::nullopt, diagonal)
+                             : run_on_part(m, target, diagonal);
         },
         mesh);
     if (!outcome) throw std::logic_error("a part lost a vertex of its cut");
@@ -170,7 +181,8 @@ class Simplification_pipeline {
   // vertex order. A mesh that run() would not cut is one part, run whole.
 
   // Runs the repairs (passes 1-2) on `mesh` and cuts it into the parts of each stage; returns
-  // their number. Keeps a copy of the input while it cuts when a pass measures against it.
+  // their number. Keeps a copy of the input while it cuts when a pass measures against it; under a
+  // bound, writes the mesh it cuts too, for the last pass.
   std::size_t cut(Mesh& mesh, const std::filesystem::path& folder) const {
     CGAL_precondition(!m_options.on_collapse);
     const auto start = std::chrono::steady_clock::now();
@@ -188,14 +200,17 @@ class Simplification_pipeline {
         internal::write_raw_mesh(internal::mesh_part(mesh, cell, std::uint32_t(c)),
                                  internal::part_file(folder, 0, c));
       job.cells = cells->splits();
+      job.whole_diagonal = diagonal_of(mesh);
+      if (keeps_input_as_cut())
+        internal::write_raw_mesh(mesh, internal::job_input_as_cut_file(folder));
     } else {
       internal::write_raw_mesh(mesh, internal::part_file(folder, 0, 0));
     }
     job.whole_faces = mesh.number_of_faces();
     job.whole_vertices = mesh.number_of_vertices();
-    if (input && (!cells || m_options.smoothing.bounded))
+    if (input && (!cells || !fits_by_cells()))
       internal::write_raw_mesh(*input, internal::job_input_file(folder));
-    if (input && cells && m_options.fit) {
+    if (input && cells && m_options.fit && fits_by_cells()) {
       // The input's part of each cell, for the fit's stages: the same cells, then shifted ones.
       const std::vector<Eigen::Vector3d> centroids = internal::face_centroids(*input);
       const internal::Spatial_cells shifted = internal::shifted_cells(centroids, *cells);
@@ -225,12 +240,11 @@ class Simplification_pipeline {
           part, internal::read_raw_mesh<Point>(internal::near_part_file(folder, stage, c)),
           fit_stage_options(job.report, stage));
     } else if (job.partitioned) {
-      const Simplification_options parts = part_options();
       result.kept_locks = internal::simplify_part(
           part, job.report.target_faces, job.whole_faces,
-          [&](Mesh& m, std::size_t target) { return run_policy(m, target, parts); });
+          [&](Mesh& m, std::size_t target) { return run_on_part(m, target, job.whole_diagonal); });
     } else {
-      result.outcome = run_policy(part, job.report.target_faces, m_options);
+      result.outcome = run_policy(part, job.report.target_faces, m_options, nullptr);
       part.collect_garbage();
     }
     internal::write_raw_mesh(part, internal::done_part_file(folder, stage, c));
@@ -269,23 +283,33 @@ class Simplification_pipeline {
             std::all_of(results.begin(), results.end(), [](const auto& r) { return r.kept_locks; });
         mesh = stitched(kept_locks ? internal::done_part_file : internal::part_file, 0,
                         job.whole_vertices);
-        if (!kept_locks) report.parts = 1;
-        outcome = run_policy(mesh, report.target_faces, m_options);
+        if (kept_locks) {
+          outcome = run_over_stitched(mesh, report.target_faces,
+                                      keeps_input_as_cut()
+                                          ? std::optional<Mesh>(internal::read_raw_mesh<Point>(
+                                                internal::job_input_as_cut_file(folder)))
+                                          : std::nullopt,
+                                      job.whole_diagonal);
+        } else {
+          report.parts = 1;
+          outcome = run_policy(mesh, report.target_faces, m_options, nullptr);
+        }
       }
       report.stop_reason = outcome.stop_reason;
       report.attributes_carried = outcome.attributes_carried;
       report.pass_seconds[std::size_t(Simplification_pass::simplification)] +=
           slowest + seconds_since(start);
-      // The input, written whole when the run was not cut; when a part lost a vertex of its cut,
-      // put back together from its parts for the fit.
-      const bool whole_input = needs_input() && (!job.partitioned || m_options.smoothing.bounded);
+      // The input, written whole when the run was not cut or is bounded; when a part lost a vertex
+      // of its cut, put back together from its parts for the fit.
+      const bool whole_input = needs_input() && (!job.partitioned || !fits_by_cells());
       const Mesh input = whole_input
                              ? internal::read_raw_mesh<Point>(internal::job_input_file(folder))
                          : report.parts == 1 && m_options.fit
                              ? stitched(internal::near_part_file, 1, report.input_vertices)
                              : Mesh();
       finish(report, mesh, input, [&](const Two_sided_fit_options& fit) {
-        if (report.parts == 1) return internal::fit_carrying_corner_values(mesh, input, fit);
+        if (report.parts == 1 || !fits_by_cells())
+          return internal::fit_carrying_corner_values(mesh, input, fit);
         next = 1;
         return Two_sided_fit_report();
       });
@@ -329,11 +353,53 @@ class Simplification_pipeline {
   // Whether a pass after the policy measures against the input.
   bool needs_input() const { return m_options.fit || m_options.smoothing.bounded; }
 
-  // The options of a part of a partitioned run: progress is reported once, for the whole.
-  Simplification_options part_options() const {
-    Simplification_options options = m_options;
-    options.progress = nullptr;
+  // Whether a partitioned run keeps the mesh it cuts for its last pass: a two-sided bound is
+  // certified against it, not against the stitched parts, which are within the bound of it
+  // already (the errors would add up).
+  bool keeps_input_as_cut() const { return m_options.two_sided_bound() > 0; }
+
+  // Whether the fit of a partitioned run runs by cells: not under a bound, since a cell's fit
+  // certifies against the input's cell alone, and a piece of the input near a cut, covered by a
+  // face of the next cell, could lose its cover to a move there. A bounded fit runs whole.
+  bool fits_by_cells() const { return m_options.two_sided_bound() == 0; }
+
+  // The diagonal of the mesh's bounding box, which the bounds are fractions of.
+  static double diagonal_of(const Mesh& mesh) {
+    return internal::diagonal_length(CGAL::Polygon_mesh_processing::bbox(mesh));
+  }
+
+  // `options` with their bounds, fractions of the diagonal of the mesh that their certifier
+  // measures (Hausdorff_input_surface), rescaled from `diagonal`, the one of the mesh cut, to
+  // that of `measured`: the tolerances stay the whole run's in length.
+  static Simplification_options in_lengths_of(Simplification_options options, const Mesh& measured,
+                                              double diagonal) {
+    const double measured_diagonal = diagonal_of(measured);
+    if (!(measured_diagonal > 0)) return options;
+    const double scale = diagonal / measured_diagonal;
+    options.max_error *= scale;
+    options.hausdorff.beta *= scale;
     return options;
+  }
+
+  // A part of a partitioned run of a mesh of that diagonal, its cut vertices locked; a bound is
+  // certified against the part as cut, in the whole's lengths. The parts then keep it together:
+  // a point of the input lies in some part's input, within tau of that part's output, and a point
+  // of the output in some part's output, within tau of that part's input. Progress is reported
+  // once, for the whole.
+  internal::Policy_outcome run_on_part(Mesh& part, std::size_t target, double diagonal) const {
+    Simplification_options options = in_lengths_of(m_options, part, diagonal);
+    options.progress = nullptr;
+    return run_policy(part, target, options, nullptr);
+  }
+
+  // The last pass of a partitioned run, over the stitched `whole`: under a bound, certified
+  // against `input_as_cut` (keeps_input_as_cut), of that diagonal.
+  internal::Policy_outcome run_over_stitched(Mesh& whole, std::size_t target,
+                                             const std::optional<Mesh>& input_as_cut,
+                                             double diagonal) const {
+    const Mesh* input = input_as_cut ? &*input_as_cut : nullptr;
+    return run_policy(whole, target, in_lengths_of(m_options, input ? *input : whole, diagonal),
+                      input);
   }
 
   static double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -422,29 +488,31 @@ class Simplification_pipeline {
     return true;
   }
 
+  // `reference`: the input a bound is certified against, when it is not `mesh` as it is now.
   static internal::Policy_outcome run_policy(Mesh& mesh, std::size_t target,
-                                             const Simplification_options& options) {
+                                             const Simplification_options& options,
+                                             const Mesh* reference) {
     switch (options.policy) {
       case Simplification_policy::gh:
-        return internal::run_gh(mesh, target, options);
+        return internal::run_gh(mesh, target, options, reference);
       case Simplification_policy::gh_probabilistic:
-        return internal::run_gh_probabilistic(mesh, target, options);
+        return internal::run_gh_probabilistic(mesh, target, options, reference);
       case Simplification_policy::lt:
-        return internal::run_lt(mesh, target, options);
+        return internal::run_lt(mesh, target, options, reference);
       case Simplification_policy::classic:
-        return internal::run_classic(mesh, target, options);
+        return internal::run_classic(mesh, target, options, reference);
       case Simplification_policy::curvature:
-        return internal::run_curvature(mesh, target, options);
+        return internal::run_curvature(mesh, target, options, reference);
       case Simplification_policy::fusion:
-        return internal::run_fusion(mesh, target, options);
+        return internal::run_fusion(mesh, target, options, reference);
       case Simplification_policy::fast:
-        return internal::run_fast(mesh, target, options);
+        return internal::run_fast(mesh, target, options, reference);
       case Simplification_policy::flat_lt:
-        return internal::run_flat_lt(mesh, target, options);
+        return internal::run_flat_lt(mesh, target, options, reference);
       case Simplification_policy::hausdorff:
-        return internal::run_hausdorff(mesh, target, options);
+        return internal::run_hausdorff(mesh, target, options, reference);
       case Simplification_policy::attributes:
-        return internal::run_attributes(mesh, target, options);
+        return internal::run_attributes(mesh, target, options, reference);
     }
     CGAL_error_msg("unknown Simplification_policy");
     return {};

@@ -18,7 +18,7 @@ using Pipeline = cgal_policies::Simplification_pipeline<Point>;
 // The runs of the policies, by family: policies_cgal.cpp, policies_classic.cpp, ...
 #define CGAL_POLICIES_APPS_POLICY_RUN(name)                                                    \
   template cgal_policies::internal::Policy_outcome cgal_policies::internal::name<apps::Point>( \
-      apps::Mesh&, std::size_t, const cgal_policies::Simplification_options&)
+      apps::Mesh&, std::size_t, const cgal_policies::Simplification_options&, const apps::Mesh*)
 
 extern CGAL_POLICIES_APPS_POLICY_RUN(run_gh);
 extern CGAL_POLICIES_APPS_POLICY_RUN(run_gh_probabilistic);

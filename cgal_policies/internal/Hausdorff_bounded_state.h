@@ -38,7 +38,9 @@ class Hausdorff_bounded_state {
         m_input(input, input_vpm, tolerance_fraction, global()),
         m_attachment(tracked),
         m_scan_order(tracked),
-        m_certifier(m_input, options.reference, options.max_refinement) {}
+        m_certifier(m_input, options.reference, options.max_refinement),
+        m_tracks_its_input(static_cast<const void*>(&input) == static_cast<const void*>(&tracked)) {
+  }
 
   Hausdorff_bounded_state(const Hausdorff_bounded_state&) = delete;
   Hausdorff_bounded_state& operator=(const Hausdorff_bounded_state&) = delete;
@@ -47,10 +49,16 @@ class Hausdorff_bounded_state {
   double diagonal() const { return m_input.diagonal(); }
   const Storage_scan_order<TriangleMesh>& scan_order() const { return m_scan_order; }
 
+  // Ties `tm`, the tracked mesh as a run starts, to the input: every face its own piece when tm
+  // is the input; else, in global mode, as an approximation of it (the stitched parts of a
+  // partitioned run, already within the tolerance).
   template <typename VertexPointMap>
-  void attach_to_itself(const TriangleMesh& tm, const VertexPointMap& vpm) {
+  void attach(const TriangleMesh& tm, const VertexPointMap& vpm) {
     m_pending.drop();
-    m_attachment.attach_to_itself(tm, vpm, global());
+    if (m_tracks_its_input || !global())
+      m_attachment.attach_to_itself(tm, vpm, global());
+    else
+      m_attachment.attach_to_approximation(tm, vpm, m_input, m_options.max_refinement);
     m_scan_order.record(tm);
   }
 
@@ -146,6 +154,7 @@ class Hausdorff_bounded_state {
   Storage_scan_order<TriangleMesh> m_scan_order;
   Hausdorff_certifier m_certifier;
   Hausdorff_pending_choice<TriangleMesh> m_pending;
+  bool m_tracks_its_input;  // the input is the tracked mesh itself
   bool m_deferred_commits = false;
   Candidate_rule m_candidate_rule;
 };

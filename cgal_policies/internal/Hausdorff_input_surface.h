@@ -32,6 +32,12 @@ constexpr std::size_t kWalkSteps = 64;
 constexpr std::size_t kFlatSearchLimit = 2000;
 constexpr std::uint32_t kNoNeighbour = 0xffffffffu;
 
+// The length of the diagonal of `box`: D, of which a Hausdorff bound's tolerance is a fraction.
+inline double diagonal_length(const CGAL::Bbox_3& box) {
+  return std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                   CGAL::square(box.zmax() - box.zmin()));
+}
+
 template <typename Mesh, typename VertexPointMap>
 Triangle_corners face_corners(typename boost::graph_traits<Mesh>::face_descriptor f, const Mesh& tm,
                               const VertexPointMap& vpm) {
@@ -56,11 +62,8 @@ class Hausdorff_input_surface {
   template <typename InputMesh, typename VertexPointMap>
   Hausdorff_input_surface(const InputMesh& input, const VertexPointMap& vpm,
                           double tolerance_fraction, bool indexed) {
-    const CGAL::Bbox_3 box =
-        CGAL::Polygon_mesh_processing::bbox(input, CGAL::parameters::vertex_point_map(vpm));
-    m_diagonal =
-        std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                  CGAL::square(box.zmax() - box.zmin()));
+    m_diagonal = diagonal_length(
+        CGAL::Polygon_mesh_processing::bbox(input, CGAL::parameters::vertex_point_map(vpm)));
     m_tolerance = tolerance_fraction * m_diagonal;
     if (!indexed) return;
     using Input_face = typename boost::graph_traits<InputMesh>::face_descriptor;

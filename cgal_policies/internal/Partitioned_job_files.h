@@ -4,6 +4,9 @@
 // 1 and 2 run the halves of the fit by cells.
 //   job              what the steps leave to the next: the cells, the counts, the report so far
 //   input            the input whole, for the passes that measure against it when it runs whole
+//                    or under a bound (the fit, bounded smoothing)
+//   input_as_cut     the mesh the parts were cut from, under a bound: the last pass certifies
+//                    against it
 //   part_S_C         part C of stage S (raw_mesh_file.h), done_S_C once its task ran, and
 //   outcome_S_C      what that task reported
 //   near_S_C         the input's part C of fit stage S, which part_S_C is fitted to
@@ -26,12 +29,13 @@
 namespace cgal_policies {
 namespace internal {
 
-constexpr std::uint64_t kJobMagic = 0x3142'4f4a'5452'4150;  // "PARTJOB1"
+constexpr std::uint64_t kJobMagic = 0x3242'4f4a'5452'4150;  // "PARTJOB2"
 
 struct Job_header {
   bool partitioned = false;  // false: the only part is the whole mesh, run as it is
   std::vector<Spatial_cells::Split> cells, shifted_cells;  // of stages 0-1 and of stage 2
   std::size_t whole_faces = 0, whole_vertices = 0;         // of the mesh that stage 0 cut
+  double whole_diagonal = 0;       // of that mesh's bounding box, which the bounds are fractions of
   std::size_t stage_vertices = 0;  // of the mesh that the current fit stage cut
   Simplification_report report;    // of the stages stitched so far
 };
@@ -48,6 +52,9 @@ inline std::filesystem::path job_file(const std::filesystem::path& folder) {
 }
 inline std::filesystem::path job_input_file(const std::filesystem::path& folder) {
   return folder / "input";
+}
+inline std::filesystem::path job_input_as_cut_file(const std::filesystem::path& folder) {
+  return folder / "input_as_cut";
 }
 inline std::filesystem::path job_output_file(const std::filesystem::path& folder) {
   return folder / "output";
@@ -126,6 +133,7 @@ inline void write_job_header(const std::filesystem::path& folder, const Job_head
   file.put_vector(job.cells);
   file.put_vector(job.shifted_cells);
   file.put(std::array<std::size_t, 3>{job.whole_faces, job.whole_vertices, job.stage_vertices});
+  file.put(job.whole_diagonal);
   write_report(file, job.report);
   file.close();
 }
@@ -141,6 +149,7 @@ inline Job_header read_job_header(const std::filesystem::path& folder) {
   job.whole_faces = counts[0];
   job.whole_vertices = counts[1];
   job.stage_vertices = counts[2];
+  job.whole_diagonal = file.get<double>();
   job.report = read_report(file);
   return job;
 }

@@ -1,6 +1,7 @@
 // CGAL's own policies as Simplification_pipeline runs them: as CGAL ships them (no extra filter),
 // the baselines of docs/evaluation.md; gh and gh-prob only step around one Debug precondition
-// (Zero_quadric_tolerant_policies.h).
+// (Zero_quadric_tolerant_policies.h). Every run_* of the pipeline takes `reference`, the input a
+// max_error bound is certified against when it is not the mesh as it is now (run_edge_collapse).
 #ifndef CGAL_POLICIES_INTERNAL_RUN_CGAL_POLICIES_H
 #define CGAL_POLICIES_INTERNAL_RUN_CGAL_POLICIES_H
 
@@ -22,37 +23,43 @@ namespace internal {
 
 template <class Policies, class Point>
 Policy_outcome run_garland_heckbert(CGAL::Surface_mesh<Point>& mesh, std::size_t target_faces,
-                                    const Simplification_options& options) {
+                                    const Simplification_options& options,
+                                    const CGAL::Surface_mesh<Point>* reference) {
   const Zero_quadric_tolerant_policies<Policies> policies(mesh);
   return run_edge_collapse(mesh, target_faces, options, policies.get_cost(),
                            policies.get_placement(),
-                           CGAL::Surface_mesh_simplification::internal::Dummy_filter());
+                           CGAL::Surface_mesh_simplification::internal::Dummy_filter(),
+                           Error_bound_keeper::runner, {}, reference);
 }
 
 template <class Point>
 Policy_outcome run_gh(CGAL::Surface_mesh<Point>& mesh, std::size_t target_faces,
-                      const Simplification_options& options) {
+                      const Simplification_options& options,
+                      const CGAL::Surface_mesh<Point>* reference) {
   using Kernel = typename CGAL::Kernel_traits<Point>::Kernel;
   return run_garland_heckbert<CGAL::Surface_mesh_simplification::GarlandHeckbert_plane_policies<
-      CGAL::Surface_mesh<Point>, Kernel>>(mesh, target_faces, options);
+      CGAL::Surface_mesh<Point>, Kernel>>(mesh, target_faces, options, reference);
 }
 
 template <class Point>
 Policy_outcome run_gh_probabilistic(CGAL::Surface_mesh<Point>& mesh, std::size_t target_faces,
-                                    const Simplification_options& options) {
+                                    const Simplification_options& options,
+                                    const CGAL::Surface_mesh<Point>* reference) {
   using Kernel = typename CGAL::Kernel_traits<Point>::Kernel;
   return run_garland_heckbert<
       CGAL::Surface_mesh_simplification::GarlandHeckbert_probabilistic_plane_policies<
-          CGAL::Surface_mesh<Point>, Kernel>>(mesh, target_faces, options);
+          CGAL::Surface_mesh<Point>, Kernel>>(mesh, target_faces, options, reference);
 }
 
 template <class Point>
 Policy_outcome run_lt(CGAL::Surface_mesh<Point>& mesh, std::size_t target_faces,
-                      const Simplification_options& options) {
+                      const Simplification_options& options,
+                      const CGAL::Surface_mesh<Point>* reference) {
   namespace SMS = CGAL::Surface_mesh_simplification;
   using Mesh = CGAL::Surface_mesh<Point>;
   return run_edge_collapse(mesh, target_faces, options, SMS::LindstromTurk_cost<Mesh>(),
-                           SMS::LindstromTurk_placement<Mesh>(), SMS::internal::Dummy_filter());
+                           SMS::LindstromTurk_placement<Mesh>(), SMS::internal::Dummy_filter(),
+                           Error_bound_keeper::runner, {}, reference);
 }
 
 }  // namespace internal

@@ -33,9 +33,10 @@ enum class Error_bound_keeper {
 };
 
 // With options.max_error > 0 and the runner keeping the bound, every placement the policy proposes
-// is certified against the mesh as it is now (the input), in both directions, and the collapse
-// refused otherwise; the run then ends at the target or when no collapse keeps the bound
-// (error_bound_reached). The seam rules wrap every policy's placement and filter, and pass
+// is certified against the input, in both directions, and the collapse refused otherwise; the run
+// then ends at the target or when no collapse keeps the bound (error_bound_reached). The input is
+// `reference` when given (the mesh a partitioned run cut into the parts that `mesh` stitches),
+// else the mesh as it is now. The seam rules wrap every policy's placement and filter, and pass
 // everything through when there is nothing to carry (one instantiation of edge_collapse per policy
 // either way). `with_carrier` gets the carrier before the run when there is something to carry,
 // for a policy that solves the values or picks the point itself.
@@ -46,7 +47,8 @@ Policy_outcome run_edge_collapse(
     const Filter& base_filter, Error_bound_keeper keeper = Error_bound_keeper::runner,
     // Point comes from the mesh alone (enable_if_t: not deduced here), so a lambda converts.
     const std::function<void(Corner_attribute_carrier<std::enable_if_t<true, Point>>&)>&
-        with_carrier = {}) {
+        with_carrier = {},
+    const CGAL::Surface_mesh<std::enable_if_t<true, Point>>* reference = nullptr) {
   using Mesh = CGAL::Surface_mesh<Point>;
   using Kernel = typename CGAL::Kernel_traits<Point>::Kernel;
   using Carrier = Corner_attribute_carrier<Point>;
@@ -72,11 +74,13 @@ Policy_outcome run_edge_collapse(
   };
   const bool bounded = options.max_error > 0;
   // Outermost: the bound commits what it accepts, so no later check may refuse it (its header).
-  if (bounded && keeper == Error_bound_keeper::runner)
-    collapse(Hausdorff_bounded_filter<Mesh, Kernel, Filter_keeping_seams>(mesh, options.max_error,
-                                                                          filter));
-  else
+  if (bounded && keeper == Error_bound_keeper::runner) {
+    const Mesh& input = reference ? *reference : mesh;
+    collapse(Hausdorff_bounded_filter<Mesh, Kernel, Filter_keeping_seams>(
+        mesh, input, input.points(), options.max_error, filter, mesh.points()));
+  } else {
     collapse(filter);
+  }
   pending.report(options);
   Policy_outcome outcome;
   outcome.attributes_carried = carried != nullptr;

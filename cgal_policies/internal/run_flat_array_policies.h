@@ -1,6 +1,7 @@
 // The flat-array engines as Simplification_pipeline runs them (docs/fast.md, docs/flat_lt.md):
 // fast and flat_lt, not edge_collapse, converting the mesh and its corner attributes to arrays
-// and back.
+// and back. They keep no max_error bound (the pipeline's precondition), so they have no use for
+// the reference input the other runs take.
 #ifndef CGAL_POLICIES_INTERNAL_RUN_FLAT_ARRAY_POLICIES_H
 #define CGAL_POLICIES_INTERNAL_RUN_FLAT_ARRAY_POLICIES_H
 
@@ -42,7 +43,7 @@ Policy_outcome flat_array_outcome(const CGAL::Surface_mesh<Point>& mesh, bool ta
 
 template <class Point>
 Policy_outcome run_fast(CGAL::Surface_mesh<Point>& mesh, std::size_t target_faces,
-                        const Simplification_options& options) {
+                        const Simplification_options& options, const CGAL::Surface_mesh<Point>*) {
   Fast_threshold_options fast = options.fast;
   fast.max_normal_angle_deg = options.max_normal_angle_deg;
   const Fast_threshold_report report = Fast_threshold_simplifier(fast)(
@@ -52,7 +53,8 @@ Policy_outcome run_fast(CGAL::Surface_mesh<Point>& mesh, std::size_t target_face
 
 template <class Point>
 Policy_outcome run_flat_lt(CGAL::Surface_mesh<Point>& mesh, std::size_t target_faces,
-                           const Simplification_options& options) {
+                           const Simplification_options& options,
+                           const CGAL::Surface_mesh<Point>*) {
   Flat_lindstrom_turk_options flat_lt = options.flat_lt;
   flat_lt.max_normal_angle_deg = options.max_normal_angle_deg;
   const Flat_lindstrom_turk_report report = Flat_lindstrom_turk_simplifier(flat_lt)(

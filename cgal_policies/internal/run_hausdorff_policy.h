@@ -18,20 +18,26 @@
 namespace cgal_policies {
 namespace internal {
 
+// `reference`: the input, when it is not the mesh as it is now (run_edge_collapse); the tolerance
+// is a fraction of its diagonal in both modes.
 template <class Point>
 Policy_outcome run_hausdorff(CGAL::Surface_mesh<Point>& mesh, std::size_t target_faces,
-                             const Simplification_options& options) {
+                             const Simplification_options& options,
+                             const CGAL::Surface_mesh<Point>* reference) {
   using Kernel = typename CGAL::Kernel_traits<Point>::Kernel;
   Hausdorff_bounded_options hausdorff = options.hausdorff;
   hausdorff.max_normal_angle_deg = options.max_normal_angle_deg;
   const bool local = hausdorff.reference == Hausdorff_reference::local;
   if (options.max_error > 0 && !local)
     hausdorff.beta = (std::min)(hausdorff.beta, options.max_error);
-  Hausdorff_bounded_policies<CGAL::Surface_mesh<Point>, Kernel> policies(mesh, hausdorff);
+  const CGAL::Surface_mesh<Point>& input = reference ? *reference : mesh;
+  Hausdorff_bounded_policies<CGAL::Surface_mesh<Point>, Kernel> policies(mesh, input,
+                                                                         input.points(), hausdorff);
   return run_edge_collapse(
       mesh, target_faces, options, policies.get_cost(), policies.get_placement(),
       policies.get_filter(), local ? Error_bound_keeper::runner : Error_bound_keeper::policy,
-      [&policies](Corner_attribute_carrier<Point>& carrier) { policies.keep_seams_with(carrier); });
+      [&policies](Corner_attribute_carrier<Point>& carrier) { policies.keep_seams_with(carrier); },
+      reference);
 }
 
 }  // namespace internal

@@ -103,14 +103,13 @@ std::optional<Policy_outcome> run_parts(std::size_t cells, std::size_t whole_fac
   return run_policy(whole, target);
 }
 
-// Simplifies `mesh` (no garbage) as the header says, by run_parts over `cells`. Nothing, and
-// `mesh` with only its edges of zero length collapsed, when a part lost a locked vertex all the
-// same: the caller then runs the policy on the whole.
+// Simplifies `mesh` (no garbage, its edges of zero length collapsed: collapse_zero_length_edges)
+// as the header says, by run_parts over `cells`. Nothing, and `mesh` as it was, when a part lost a
+// locked vertex all the same: the caller then runs the policy on the whole.
 template <class Point, class RunPolicy>
 std::optional<Policy_outcome> run_partitioned(CGAL::Surface_mesh<Point>& mesh, std::size_t target,
                                               const Spatial_cells& cells, std::size_t threads,
                                               const RunPolicy& run_policy) {
-  collapse_zero_length_edges(mesh);
   const std::vector<std::uint32_t> cell = face_cells(mesh, cells);
   return run_parts(
       cells.size(), mesh.number_of_faces(), mesh.number_of_vertices(), target, threads,

@@ -4,10 +4,12 @@
 // Hausdorff_bounded_policies relies on, recorded call by call so that a CGAL upgrade that changes
 // it fails here; and the bounds checked by mesh_error's measure (apps::measure_mesh_error): local
 // mode drifts while global mode keeps the two-sided bound, on a cylinder band and on real meshes,
-// and Hausdorff_bounded_filter bounds a run of another policy.
+// and Hausdorff_bounded_filter bounds a run of another policy; and the bound kept across the parts
+// of a partitioned run, in memory and as a job.
 #include "pipeline_runs.h"
 #include "test_meshes.h"
 
+#include "evaluation/mesh_validity.h"
 #include "evaluation/surface_error.h"
 #include "io/mesh_io.h"
 
@@ -28,8 +30,14 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
+#include <iomanip>
 #include <map>
+#include <sstream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -459,6 +467,155 @@ TEST(HausdorffBoundedFilterAlone, BoundsARunOfAnotherPolicy) {
   EXPECT_GT(free_error.hausdorff, tolerance * free_error.bbox_diagonal);  // the test has teeth
   EXPECT_LT(bounded.number_of_faces(), original.number_of_faces());
   EXPECT_LE(error.hausdorff, tolerance * error.bbox_diagonal);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The bound across the parts of a partitioned run (Simplification_pipeline; docs/scale.md): each
+// part certified against itself as cut, in the whole's lengths, and the last pass against the
+// mesh cut, not against the stitched parts.
+
+TEST(BoundedPartitionedRun, ABoundOrTheHausdorffPolicyIsCutAsAnyOtherRun) {
+  const std::size_t per_part = cgal_policies::Simplification_options::kFacesPerPart;
+  cgal_policies::Simplification_options options;
+  options.max_error = 0.01;
+  EXPECT_EQ(options.cell_count(4 * per_part), 4u);
+  EXPECT_EQ(options.cell_count(per_part), 1u);
+  options.parts = 2;
+  EXPECT_EQ(options.cell_count(1000), 2u);
+  options.max_error = 0;
+  options.policy = cgal_policies::Simplification_policy::hausdorff;
+  EXPECT_EQ(options.cell_count(1000), 2u);
+  options.on_collapse = [](CGAL::SM_Vertex_index, CGAL::SM_Vertex_index) {};
+  EXPECT_EQ(options.cell_count(1000), 1u);  // the viewer's replay needs one mesh
+}
+
+// A mesh as text, its points to the last bit.
+std::string mesh_text(const Mesh& mesh) {
+  std::ostringstream out;
+  out << std::setprecision(17) << mesh;
+  return out.str();
+}
+
+// `input` simplified with `options` (a two-sided bound of `bound`) cut in four, on one thread and
+// on two: the same mesh both times, returned; mesh_error's two-sided Hausdorff distance within the
+// bound; valid, manifold and closed as the input; a quarter of its faces at most.
+Mesh expect_bound_kept_in_four_parts(const Mesh& input,
+                                     cgal_policies::Simplification_options options, double bound,
+                                     std::size_t samples) {
+  const apps::Mesh_validity before = apps::check_mesh_validity(input);
+  options.parts = 4;
+  std::string text[2];
+  Mesh mesh;
+  for (const std::size_t threads : {1, 2}) {
+    options.threads = threads;
+    mesh = input;
+    const cgal_policies::Simplification_report report = apps::Pipeline(options).run(mesh);
+    EXPECT_EQ(report.parts, 4u);
+    EXPECT_EQ(report.bound, bound);
+    const apps::Mesh_error error = apps::measure_mesh_error(input, mesh, samples);
+    EXPECT_LE(error.hausdorff, bound * error.bbox_diagonal)
+        << "Hausdorff " << error.hausdorff / error.bbox_diagonal << " of the diagonal";
+    EXPECT_LE(mesh.number_of_faces(), input.number_of_faces() / 4);
+    const apps::Mesh_validity after = apps::check_mesh_validity(mesh);
+    EXPECT_TRUE(after.valid);
+    EXPECT_EQ(after.non_manifold_vertices, 0u);
+    EXPECT_EQ(after.closed, before.closed);
+    EXPECT_EQ(after.euler_characteristic, before.euler_characteristic);
+    text[threads - 1] = mesh_text(mesh);
+  }
+  EXPECT_TRUE(text[0] == text[1]) << "one thread and two gave different meshes";
+  return mesh;
+}
+
+class BoundedPartitionedRun : public testing::TestWithParam<std::string> {};
+
+// A sphere of 5,120 faces asked down to 50 within 0.5% of its diagonal: the bound stops the run.
+TEST_P(BoundedPartitionedRun, KeepsTheBoundOnASphere) {
+  const double bound = 0.005;
+  cgal_policies::Simplification_options options = pipeline_runs::policy_alone(GetParam(), 50);
+  options.max_error = bound;
+  Mesh sphere = test_meshes::loop_sphere(4);
+  const Mesh out = expect_bound_kept_in_four_parts(sphere, options, bound, 20000);
+  EXPECT_GT(out.number_of_faces(), 50u);
+  options.parts = 4;
+  EXPECT_EQ(apps::Pipeline(options).run(sphere).stop_reason,
+            cgal_policies::Stop_reason::error_bound_reached);
+}
+
+// The bunny to 1% within 0.2% of its diagonal.
+TEST_P(BoundedPartitionedRun, KeepsTheBoundOnTheBunny) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const double bound = 0.002;
+  const Mesh bunny = apps::read_triangle_mesh(test_meshes::data_file("bunny.obj"));
+  cgal_policies::Simplification_options options =
+      pipeline_runs::policy_alone(GetParam(), bunny.number_of_faces() / 100);
+  options.max_error = bound;
+  expect_bound_kept_in_four_parts(bunny, options, bound, apps::kDefaultErrorSamples);
+}
+
+INSTANTIATE_TEST_SUITE_P(Policies, BoundedPartitionedRun,
+                         testing::Values("lt", "classic", "hausdorff", "attributes"),
+                         [](const auto& test) { return test.param; });
+
+// The hausdorff policy's own tolerance, and the bounded fit after the parts (it runs whole).
+TEST(BoundedPartitionedRunAndFit, KeepTheBoundOnASphere) {
+  const double bound = 0.005;
+  for (const std::string policy : {"hausdorff", "lt"}) {
+    SCOPED_TRACE(policy);
+    cgal_policies::Simplification_options options = pipeline_runs::policy_alone(policy, 50);
+    if (policy == "hausdorff")
+      options.hausdorff.beta = bound;
+    else
+      options.max_error = bound;
+    options.fit = true;
+    expect_bound_kept_in_four_parts(test_meshes::loop_sphere(4), options, bound, 20000);
+  }
+}
+
+// A folder of its own under the test's temporary folder, removed with what it holds.
+class Job_folder {
+ public:
+  explicit Job_folder(const std::string& name)
+      : m_path(std::filesystem::path(testing::TempDir()) /
+               ("bounded_job_" + name + "_" + std::to_string(::getpid()))) {
+    std::filesystem::remove_all(m_path);
+    std::filesystem::create_directories(m_path);
+  }
+  ~Job_folder() { std::filesystem::remove_all(m_path); }
+  const std::filesystem::path& path() const { return m_path; }
+
+ private:
+  std::filesystem::path m_path;
+};
+
+// Cut, parts and stitch under a bound: the mesh of the run in memory, in one stage (the bounded
+// fit runs whole, in the stitch), the bound kept.
+TEST(BoundedPartitionedJob, GivesTheMeshOfTheRunInMemory) {
+  const double bound = 0.005;
+  const Mesh sphere = test_meshes::loop_sphere(4);
+  for (const bool fit : {false, true}) {
+    for (const std::string policy : {"lt", "hausdorff"}) {
+      SCOPED_TRACE(policy + (fit ? " + fit" : ""));
+      cgal_policies::Simplification_options options = pipeline_runs::policy_alone(policy, 50);
+      options.max_error = bound;
+      options.fit = fit;
+      options.parts = 4;
+      Mesh in_memory = sphere;
+      const cgal_policies::Simplification_report expected = apps::Pipeline(options).run(in_memory);
+      const Job_folder folder(policy);
+      Mesh mesh = sphere;
+      cgal_policies::Simplification_report report;
+      EXPECT_EQ(pipeline_runs::run_as_job(options, mesh, folder.path(), report), 1);
+      EXPECT_EQ(report.parts, 4u);
+      EXPECT_EQ(report.fitted, fit);
+      EXPECT_EQ(report.stop_reason, expected.stop_reason);
+      EXPECT_EQ(report.output_faces, expected.output_faces);
+      EXPECT_TRUE(mesh_text(mesh) == mesh_text(in_memory))
+          << "the job and the run in memory gave different meshes";
+      const apps::Mesh_error error = apps::measure_mesh_error(sphere, mesh, 20000);
+      EXPECT_LE(error.hausdorff, bound * error.bbox_diagonal);
+    }
+  }
 }
 
 }  // namespace

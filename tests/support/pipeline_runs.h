@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cstddef>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -38,6 +39,23 @@ inline cgal_policies::Simplification_options policy_alone(const std::string& pol
 inline cgal_policies::Simplification_report simplify(apps::Mesh& mesh, const std::string& policy,
                                                      std::size_t target) {
   return apps::Pipeline(policy_alone(policy, target)).run(mesh);
+}
+
+// The tasks of a partitioned job (Simplification_pipeline::cut, run_part, stitch, result) on
+// `mesh` in `folder`, the parts of each stage in reverse order (any order will do); its number of
+// stages. `mesh` becomes the output.
+inline int run_as_job(const cgal_policies::Simplification_options& options, apps::Mesh& mesh,
+                      const std::filesystem::path& folder,
+                      cgal_policies::Simplification_report& report) {
+  const apps::Pipeline pipeline(options);
+  const std::size_t parts = pipeline.cut(mesh, folder);
+  int stage = 0;
+  for (;; ++stage) {
+    for (std::size_t c = parts; c-- > 0;) pipeline.run_part(folder, stage, c);
+    if (!pipeline.stitch(folder, stage)) break;
+  }
+  report = pipeline.result(folder, mesh);
+  return stage + 1;
 }
 
 }  // namespace pipeline_runs
