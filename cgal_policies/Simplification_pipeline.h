@@ -70,7 +70,8 @@ class Simplification_pipeline {
   }
 
   // Runs every pass on `mesh`. The passes that measure against the input (fit, bounded smoothing)
-  // keep a copy of it.
+  // keep a copy of it; a partitioned run under a bound keeps another, of the mesh it cuts (after
+  // the repairs), for its last pass.
   Simplification_report run(Mesh& mesh) const {
     return needs_input() ? run(mesh, Mesh(mesh)) : run(mesh, Mesh());
   }
