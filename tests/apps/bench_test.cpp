@@ -369,6 +369,7 @@ TEST(BenchScalePreset, MissingInputsSayHowToMakeThem) {
 // rows it lists, in order, the scaling of every 2-thread run, and the out-of-core rows as
 // simplify --out-of-core makes them, their error not measured.
 TEST(BenchScalePreset, RunsItsRowsOnStandIns) {
+  SKIP_IF_TOO_SLOW_WHEN_SANITIZED();
   const fs::path out =
       fs::temp_directory_path() / ("cgal_policies_bench_scale_" + std::to_string(::getpid()));
   fs::remove_all(out);

@@ -531,6 +531,7 @@ class BoundedPartitionedRun : public testing::TestWithParam<std::string> {};
 
 // A sphere of 5,120 faces asked down to 50 within 0.5% of its diagonal: the bound stops the run.
 TEST_P(BoundedPartitionedRun, KeepsTheBoundOnASphere) {
+  SKIP_IF_TOO_SLOW_WHEN_SANITIZED();
   const double bound = 0.005;
   cgal_policies::Simplification_options options = pipeline_runs::policy_alone(GetParam(), 50);
   options.max_error = bound;
@@ -559,6 +560,7 @@ INSTANTIATE_TEST_SUITE_P(Policies, BoundedPartitionedRun,
 
 // The hausdorff policy's own tolerance, and the bounded fit after the parts (it runs whole).
 TEST(BoundedPartitionedRunAndFit, KeepTheBoundOnASphere) {
+  SKIP_IF_TOO_SLOW_WHEN_SANITIZED();
   const double bound = 0.005;
   for (const std::string policy : {"hausdorff", "lt"}) {
     SCOPED_TRACE(policy);
@@ -591,6 +593,7 @@ class Job_folder {
 // Cut, parts and stitch under a bound: the mesh of the run in memory, in one stage (the bounded
 // fit runs whole, in the stitch), the bound kept.
 TEST(BoundedPartitionedJob, GivesTheMeshOfTheRunInMemory) {
+  SKIP_IF_TOO_SLOW_WHEN_SANITIZED();
   const double bound = 0.005;
   const Mesh sphere = test_meshes::loop_sphere(4);
   for (const bool fit : {false, true}) {

@@ -1058,6 +1058,7 @@ TEST(PartitionedJob, ReadsAPartBackAsItWasHeld) {
 // Cut, parts and stitch give the bytes of the run in memory, with its report: on four parts with
 // each kind of corner value, with the fit by cells, and on one part (a mesh the run would not cut).
 TEST(PartitionedJob, GivesTheBytesOfTheRunInMemory) {
+  SKIP_IF_TOO_SLOW_WHEN_SANITIZED();
   const Mesh sphere = painted_sphere();
   struct Case {
     std::string policy;

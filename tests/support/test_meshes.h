@@ -271,8 +271,9 @@ inline std::size_t degenerate_face_count(const Mesh& mesh) {
   return count;
 }
 
-// CI's sanitizer pass sets CGAL_POLICIES_SKIP_REAL_MESHES: real meshes are many times slower
-// to simplify in an instrumented Debug build, and the Release pass runs them all.
+// CI's sanitizer pass sets CGAL_POLICIES_SKIP_REAL_MESHES: real meshes, and the few tiny-mesh
+// tests that certify many runs, are many times slower in an instrumented Debug build (minutes
+// each), and the Release pass runs them all.
 inline bool real_meshes_skipped() {
   return std::getenv("CGAL_POLICIES_SKIP_REAL_MESHES") != nullptr;
 }
@@ -284,6 +285,14 @@ inline bool real_meshes_skipped() {
   do {                                                                                          \
     if (test_meshes::real_meshes_skipped())                                                     \
       GTEST_SKIP() << "CGAL_POLICIES_SKIP_REAL_MESHES is set: real meshes run in Release only"; \
+  } while (0)
+
+// Skips a test on tiny meshes that takes minutes in CI's sanitized pass; the Release pass runs it.
+#define SKIP_IF_TOO_SLOW_WHEN_SANITIZED()                                                 \
+  do {                                                                                    \
+    if (test_meshes::real_meshes_skipped())                                               \
+      GTEST_SKIP() << "CGAL_POLICIES_SKIP_REAL_MESHES is set: too slow in the sanitized " \
+                      "Debug build, it runs in Release";                                  \
   } while (0)
 
 #endif  // CGAL_POLICIES_TESTS_TEST_MESHES_H
