@@ -6,6 +6,7 @@
 // mode drifts while global mode keeps the two-sided bound, on a cylinder band and on real meshes,
 // and Hausdorff_bounded_filter bounds a run of another policy; and the bound kept across the parts
 // of a partitioned run, in memory and as a job.
+#include "Job_folder.h"
 #include "pipeline_runs.h"
 #include "test_meshes.h"
 
@@ -573,22 +574,6 @@ TEST(BoundedPartitionedRunAndFit, KeepTheBoundOnASphere) {
     expect_bound_kept_in_four_parts(test_meshes::loop_sphere(4), options, bound, 20000);
   }
 }
-
-// A folder of its own under the test's temporary folder, removed with what it holds.
-class Job_folder {
- public:
-  explicit Job_folder(const std::string& name)
-      : m_path(std::filesystem::path(testing::TempDir()) /
-               ("bounded_job_" + name + "_" + std::to_string(::getpid()))) {
-    std::filesystem::remove_all(m_path);
-    std::filesystem::create_directories(m_path);
-  }
-  ~Job_folder() { std::filesystem::remove_all(m_path); }
-  const std::filesystem::path& path() const { return m_path; }
-
- private:
-  std::filesystem::path m_path;
-};
 
 // Cut, parts and stitch under a bound: the mesh of the run in memory, in one stage (the bounded
 // fit runs whole, in the stitch), the bound kept.

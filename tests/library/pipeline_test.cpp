@@ -3,6 +3,7 @@
 // real meshes (style.md's property tests): valid output, the face target reached or a stop reason
 // given, closed stays closed, Euler characteristic kept, finite coordinates, two runs that write
 // identical files, the fitting pass after a policy, and the results pinned before the refactoring.
+#include "Job_folder.h"
 #include "pipeline_runs.h"
 #include "test_meshes.h"
 
@@ -48,6 +49,7 @@ namespace {
 using namespace test_meshes;
 using pipeline_runs::policy_alone;
 using pipeline_runs::policy_names;
+using pipeline_runs::run_as_job;
 using pipeline_runs::simplify;
 
 // A gtest parameter name: letters, digits and underscores only.
@@ -966,37 +968,6 @@ TEST(StreamedRun, KeepsWhatAPartitionedRunKeepsOnTheBunny) {
 // ---------------------------------------------------------------------------------------------
 // Partitioned jobs: the steps of a partitioned run handing their work on through files
 // (Simplification_pipeline::cut, simplify_part, stitch; internal/raw_mesh_file.h).
-
-// A folder of its own under the test's temporary folder, removed with what it holds.
-class Job_folder {
- public:
-  explicit Job_folder(const std::string& name)
-      : m_path(std::filesystem::path(testing::TempDir()) /
-               ("job_" + name + "_" + std::to_string(::getpid()))) {
-    std::filesystem::remove_all(m_path);
-    std::filesystem::create_directories(m_path);
-  }
-  ~Job_folder() { std::filesystem::remove_all(m_path); }
-  const std::filesystem::path& path() const { return m_path; }
-
- private:
-  std::filesystem::path m_path;
-};
-
-// The tasks of a job on `mesh`, the parts of each stage in reverse order (any order will do); its
-// number of stages.
-int run_as_job(const cgal_policies::Simplification_options& options, Mesh& mesh,
-               const std::filesystem::path& folder, cgal_policies::Simplification_report& report) {
-  const apps::Pipeline pipeline(options);
-  const std::size_t parts = pipeline.cut(mesh, folder);
-  int stage = 0;
-  for (;; ++stage) {
-    for (std::size_t c = parts; c-- > 0;) pipeline.run_part(folder, stage, c);
-    if (!pipeline.stitch(folder, stage)) break;
-  }
-  report = pipeline.result(folder, mesh);
-  return stage + 1;
-}
 
 // A sphere with texture coordinates, normals, colours and materials on its corners.
 Mesh painted_sphere() {
