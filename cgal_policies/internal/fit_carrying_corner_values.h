@@ -2,7 +2,8 @@
 // "Texture coordinates, normals and colours"): with values, the seam vertices stay where they are,
 // no edge flips (a flip would hand corners to other vertices), and every moved vertex takes the
 // values at the point of its old star nearest its new point, as a collapse's kept vertex does
-// (docs/attributes.md), unless that would turn a texture triangle around it over.
+// (docs/attributes.md), unless that would turn a texture triangle around it over; then the texture
+// coordinates on no seam are solved again against the input (resolve_free_uvs.h).
 #ifndef CGAL_POLICIES_INTERNAL_FIT_CARRYING_CORNER_VALUES_H
 #define CGAL_POLICIES_INTERNAL_FIT_CARRYING_CORNER_VALUES_H
 
@@ -11,6 +12,7 @@
 #include <cgal_policies/Two_sided_fit_options.h>
 #include <cgal_policies/Two_sided_fit_report.h>
 #include <cgal_policies/Two_sided_fitter.h>
+#include <cgal_policies/internal/resolve_free_uvs.h>
 
 #include <CGAL/boost/graph/iterator.h>
 
@@ -62,11 +64,12 @@ Two_sided_fit_report fit_carrying_corner_values(
   options.flips = false;
   const Mesh before = mesh;
   const Corner_attribute_carrier<Point> seams(mesh);
-  const Two_sided_fit_report report =
-      Two_sided_fitter<Mesh>(original, options).fit(mesh, [&](typename Mesh::Vertex_index v) {
-        return seams.seam_edges_at(v) > 0 || (pinned && pinned(v));
-      });
+  const auto stays = [&](typename Mesh::Vertex_index v) {
+    return seams.seam_edges_at(v) > 0 || (pinned && pinned(v));
+  };
+  const Two_sided_fit_report report = Two_sided_fitter<Mesh>(original, options).fit(mesh, stays);
   carry_corner_values(mesh, before);
+  resolve_free_uvs(mesh, original, [&](typename Mesh::Vertex_index v) { return !stays(v); });
   return report;
 }
 

@@ -15,6 +15,7 @@
 #include <cgal_policies/Face_count_stop_predicate.h>
 #include <cgal_policies/Seam_keeping_filter.h>
 #include <cgal_policies/Seam_keeping_placement.h>
+#include <cgal_policies/internal/resolve_free_uvs.h>
 
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/LindstromTurk_cost.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/LindstromTurk_placement.h>
@@ -188,6 +189,38 @@ TEST(CarriedAttributes, FittingSpotKeepsItsSeamsAndItsTexture) {
   };
   EXPECT_LT(uv_error(mesh), 1.1 * uv_error(simplified));
   EXPECT_LT(mean_error(input, mesh), mean_error(input, simplified));
+}
+
+// The fitting pass's last step (internal/resolve_free_uvs.h): texture coordinates that drifted off
+// the input's field at the vertices on no seam are solved back onto it, but for the hold to the
+// drifted values (1e-6 of a vertex's weight); the border's stay.
+TEST(CarriedAttributes, SolvingTheFreeTextureCoordinatesAgainRestoresTheInputsField) {
+  const auto field = [](Mesh::Face_index, const Point& p) {
+    return std::array<double, 2>{0.3 * p.x() + 0.1 * p.y(), -0.2 * p.x() + 0.5 * p.y() + 0.25};
+  };
+  Mesh input = flat_grid(10);
+  paint_corners(input, field, true);
+  Mesh mesh = input;
+  const cgal_policies::Corner_attribute_carrier<Point> seams(mesh);
+  const Attributes attributes(mesh);
+  std::size_t drifted = 0;
+  for (const auto v : vertices(mesh)) {
+    if (seams.seam_edges_at(v) > 0) continue;
+    for (const auto h : halfedges_around_target(v, mesh)) {
+      (*attributes.uvs)[h][0] += 0.004 * double(std::size_t(v) % 3);
+      (*attributes.uvs)[h][1] -= 0.003;
+    }
+    ++drifted;
+  }
+  ASSERT_GT(drifted, 0u);
+  cgal_policies::internal::resolve_free_uvs(
+      mesh, input, [&](Mesh::Vertex_index v) { return seams.seam_edges_at(v) == 0; });
+  for (const auto h : halfedges(mesh)) {
+    if (mesh.is_border(h)) continue;
+    const auto expected = field(face(h, mesh), mesh.point(target(h, mesh)));
+    EXPECT_NEAR((*attributes.uvs)[h][0], expected[0], 1e-7);
+    EXPECT_NEAR((*attributes.uvs)[h][1], expected[1], 1e-7);
+  }
 }
 
 TEST(CarriedAttributes, SpotKeepsItsSeamCornersAndTurnsNoTextureTriangleOver) {
