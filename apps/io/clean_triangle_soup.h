@@ -1,6 +1,5 @@
-// The reader's fast path: most files already hold an oriented manifold triangle mesh, and for
-// those CGAL's general path (a std::set of every edge to check the soup, then Euler::add_face per
-// face) took most of the reading time. This builds the Surface_mesh straight from the indices.
+// The reader's fast path: most files already hold an oriented manifold triangle mesh, built
+// straight from their indices (cgal_policies/internal/clean_triangle_mesh.h).
 #ifndef CGAL_POLICIES_IO_CLEAN_TRIANGLE_SOUP_H
 #define CGAL_POLICIES_IO_CLEAN_TRIANGLE_SOUP_H
 

@@ -11,6 +11,7 @@
 
 #include <cgal_policies/Corner_attributes.h>
 #include <cgal_policies/internal/Spatial_cells.h>
+#include <cgal_policies/internal/clean_triangle_mesh.h>
 #include <cgal_policies/internal/mesh_geometry.h>
 #include <cgal_policies/internal/part_vertex_maps.h>
 
@@ -23,6 +24,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -59,13 +61,13 @@ std::vector<std::uint32_t> face_cells(const CGAL::Surface_mesh<Point>& mesh,
 }
 
 // The corner values and materials of face i of `to` from the corners `corners[i]` of the mesh
-// `from[i]`: `to` was made by polygon_soup_to_polygon_mesh from `polygons`, whose vertex j is
-// vertex j of `to` and whose polygon i is its face i, its corners in the order of corners[i].
+// `from[i]`: `to` was built from the triangles `triangles` (three point indices each) of points
+// that are all used, so that point j is vertex j of `to` and triangle i, its corners in the order
+// of corners[i], is face i.
 template <class Point>
 void copy_corner_values(const std::vector<const CGAL::Surface_mesh<Point>*>& from,
                         const std::vector<std::array<CGAL::SM_Halfedge_index, 3>>& corners,
-                        const std::vector<std::vector<std::size_t>>& polygons,
-                        CGAL::Surface_mesh<Point>& to) {
+                        const std::vector<std::size_t>& triangles, CGAL::Surface_mesh<Point>& to) {
   using Attributes = Corner_attributes<Point>;
   if (from.empty() || !Attributes(*from.front()).any()) return;
   const Attributes target = Attributes::add(to, Attributes(*from.front()).kinds());
@@ -75,11 +77,10 @@ void copy_corner_values(const std::vector<const CGAL::Surface_mesh<Point>*>& fro
   for (const auto f : to.faces()) {
     if (from[i] != read) source.emplace(*(read = from[i]));
     if (target.materials) (*target.materials)[f] = (*source->materials)[read->face(corners[i][0])];
+    const auto triangle = triangles.begin() + std::ptrdiff_t(3 * i);
     for (const auto h : CGAL::halfedges_around_face(to.halfedge(f), to)) {
-      const std::size_t k =
-          std::size_t(std::find(polygons[i].begin(), polygons[i].end(), std::size_t(to.target(h))) -
-                      polygons[i].begin());
-      target.set_values(h, source->values(corners[i][k]));
+      const auto k = std::find(triangle, triangle + 3, std::size_t(to.target(h))) - triangle;
+      target.set_values(h, source->values(corners[i][std::size_t(k)]));
     }
     ++i;
   }
@@ -135,20 +136,22 @@ CGAL::Surface_mesh<Point> mesh_part(const CGAL::Surface_mesh<Point>& mesh,
   std::vector<Point> points;
   for (const std::uint32_t start : starts)
     points.push_back(mesh.point(mesh.target(Halfedge(start))));
-  std::vector<std::vector<std::size_t>> polygons;
-  for (const auto& t : triangles) {
-    std::vector<std::size_t> polygon;
+  std::vector<std::size_t> triangle_points;
+  triangle_points.reserve(3 * triangles.size());
+  for (const auto& t : triangles)
     for (const std::uint32_t start : t)
-      polygon.push_back(
+      triangle_points.push_back(
           std::size_t(std::lower_bound(starts.begin(), starts.end(), start) - starts.begin()));
-    polygons.push_back(std::move(polygon));
-  }
   Mesh part;
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, part);
+  std::size_t unused_points = 0;
+  // Each fan is a vertex of its own, so the part is a clean mesh whenever `mesh` is one.
+  if (!build_clean_triangle_mesh(points, triangle_points, part, unused_points))
+    throw std::logic_error("mesh_part: the cell's faces are not a manifold mesh");
   add_part_vertex_maps(
       part, [&](auto v) { return mesh.target(Halfedge(starts[std::size_t(v)])); }, locked);
   if (with_values)
-    copy_corner_values(std::vector<const Mesh*>(corners.size(), &mesh), corners, polygons, part);
+    copy_corner_values(std::vector<const Mesh*>(corners.size(), &mesh), corners, triangle_points,
+                       part);
   return part;
 }
 
@@ -161,7 +164,7 @@ CGAL::Surface_mesh<Point> stitch_parts(const std::vector<CGAL::Surface_mesh<Poin
   constexpr std::size_t kNew = std::size_t(-1);
   std::vector<std::size_t> shared(whole_vertices, kNew);
   std::vector<Point> points;
-  std::vector<std::vector<std::size_t>> polygons;
+  std::vector<std::size_t> triangles;
   std::vector<std::array<CGAL::SM_Halfedge_index, 3>> corners;
   std::vector<const Mesh*> owner;
   for (const Mesh& m : parts) {
@@ -180,26 +183,30 @@ CGAL::Surface_mesh<Point> stitch_parts(const std::vector<CGAL::Surface_mesh<Poin
       points.push_back(m.point(v));
     }
     for (const auto f : m.faces()) {
-      std::vector<std::size_t> polygon;
       std::array<CGAL::SM_Halfedge_index, 3> c;
       int k = 0;
       for (const auto h : CGAL::halfedges_around_face(m.halfedge(f), m)) {
-        polygon.push_back(index[std::size_t(m.target(h))]);
+        triangles.push_back(index[std::size_t(m.target(h))]);
         c[k++] = h;
       }
-      polygons.push_back(std::move(polygon));
       corners.push_back(c);
       owner.push_back(&m);
     }
   }
   Mesh whole;
+  std::size_t unused_points = 0;
+  if (build_clean_triangle_mesh(points, triangles, whole, unused_points)) {
+    copy_corner_values(owner, corners, triangles, whole);
+    return whole;
+  }
   // The parts of a streamed run were never one mesh: where the input's surface is not manifold,
   // they meet again in a vertex or an edge that is not, split here as in the parts. Such parts
   // carry no corner values.
-  if (!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
-    CGAL::Polygon_mesh_processing::orient_polygon_soup(points, polygons);
+  std::vector<std::vector<std::size_t>> polygons;
+  for (std::size_t s = 0; s < triangles.size(); s += 3)
+    polygons.push_back({triangles[s], triangles[s + 1], triangles[s + 2]});
+  CGAL::Polygon_mesh_processing::orient_polygon_soup(points, polygons);
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, whole);
-  copy_corner_values(owner, corners, polygons, whole);
   return whole;
 }
 

@@ -11,6 +11,7 @@
 
 #include <cgal_policies/internal/Spatial_cells.h>
 #include <cgal_policies/internal/Spill_files.h>
+#include <cgal_policies/internal/clean_triangle_mesh.h>
 #include <cgal_policies/internal/mesh_geometry.h>
 #include <cgal_policies/internal/part_vertex_maps.h>
 
@@ -170,21 +171,24 @@ CGAL::Surface_mesh<Point> streamed_part(const std::vector<Point>& points,
   std::vector<Point> part_points;
   part_points.reserve(origin.size());
   for (const std::uint32_t v : origin) part_points.push_back(points[v]);
-  std::vector<std::array<std::size_t, 3>> polygons;
-  polygons.reserve(triangles.size());
-  for (const Spill_files::Triangle& t : triangles) {
-    std::array<std::size_t, 3> polygon;
+  std::vector<std::size_t> corners;
+  corners.reserve(3 * triangles.size());
+  for (const Spill_files::Triangle& t : triangles)
     for (int k = 0; k < 3; ++k)
-      polygon[k] =
-          std::size_t(std::lower_bound(origin.begin(), origin.end(), t[k]) - origin.begin());
-    polygons.push_back(polygon);
-  }
-  Duplicated_point_origins visitor;
-  visitor.origin = &origin;
-  CGAL::Polygon_mesh_processing::orient_polygon_soup(part_points, polygons,
-                                                     CGAL::parameters::visitor(visitor));
+      corners.push_back(
+          std::size_t(std::lower_bound(origin.begin(), origin.end(), t[k]) - origin.begin()));
   Mesh part;
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(part_points, polygons, part);
+  std::size_t unused_points = 0;
+  if (!build_clean_triangle_mesh(part_points, corners, part, unused_points)) {
+    std::vector<std::array<std::size_t, 3>> polygons(triangles.size());
+    for (std::size_t i = 0; i < polygons.size(); ++i)
+      for (std::size_t k = 0; k < 3; ++k) polygons[i][k] = corners[3 * i + k];
+    Duplicated_point_origins visitor;
+    visitor.origin = &origin;
+    CGAL::Polygon_mesh_processing::orient_polygon_soup(part_points, polygons,
+                                                       CGAL::parameters::visitor(visitor));
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(part_points, polygons, part);
+  }
   add_part_vertex_maps(
       part, [&](auto v) { return typename Mesh::Vertex_index(origin[std::size_t(v)]); },
       [&](auto o) { return vertex_cell[std::size_t(o)] == kCutCell; });
