@@ -67,7 +67,7 @@ void print_help() {
          "                        but the largest (a whole number; default 0, off)\n"
          "  --parts N             cut IN into N cells (a power of two) simplified at once and\n"
          "                        stitched (docs/scale.md); 0: one per 500,000 faces (default),\n"
-         "                        1: none. Not with --max-error or hausdorff\n"
+         "                        1: none. A bound (--max-error, hausdorff) holds across them\n"
          "  --threads N           cores for the cells, 0: all (default); the output is the same\n"
          "                        for every N\n"
          "  --out-of-core         never hold IN whole (binary PLY or OBJ): read it in passes,\n"
