@@ -34,7 +34,8 @@
 //   threads               cores for the parts, 0: all of them (default); the output is the same
 //                         for every count
 //   progress              called now and then with the pass running, how far it is in [0, 1], and
-//                         the face count; may be empty
+//                         the face count; may be empty. The parts of a partitioned run call it
+//                         from their threads, one call at a time, with the whole's face count
 //   pass_done             called after each pass that ran, the mesh compact; may be empty
 //   interrupted           polled during the passes; true stops the run where it is, with
 //                         Stop_reason::interrupted, the mesh still valid; may be empty. In a

@@ -28,6 +28,7 @@
 #include <cgal_policies/Laplacian_smoother.h>
 #include <cgal_policies/Simplification_options.h>
 #include <cgal_policies/Simplification_report.h>
+#include <cgal_policies/internal/Part_progress.h>
 #include <cgal_policies/internal/Partitioned_job_files.h>
 #include <cgal_policies/internal/Streamed_cut.h>
 #include <cgal_policies/internal/fit_carrying_corner_values.h>
@@ -90,10 +91,12 @@ class Simplification_pipeline {
         const double diagonal = diagonal_of(mesh);
         const std::optional<Mesh> input_as_cut =
             keeps_input_as_cut() ? std::optional<Mesh>(mesh) : std::nullopt;
+        internal::Part_progress progress(m_options.progress, mesh.number_of_faces(),
+                                         report.target_faces);
         outcome = internal::run_partitioned(
             mesh, report.target_faces, *cells, m_options.threads, [&](Mesh& m, std::size_t target) {
-              return &m == &mesh ? run_over_stitched(m, target, input_as_cut, diagonal)
-                                 : run_on_part(m, target, diagonal);
+              return &m == &mesh ? run_over_stitched(m, target, input_as_cut, diagonal, &progress)
+                                 : run_on_part(m, target, diagonal, &progress);
             });
       }
       if (!outcome) {
@@ -143,12 +146,13 @@ class Simplification_pipeline {
     };
     const double diagonal =
         internal::diagonal_length(CGAL::bbox_3(input.points.begin(), input.points.end()));
+    internal::Part_progress progress(m_options.progress, input.faces, report.target_faces);
     const std::optional<internal::Policy_outcome> outcome = internal::run_parts(
         cells.size(), input.faces, input.points.size(), report.target_faces, m_options.threads,
         input_parts(spills),
         [&](Mesh& m, std::size_t target) {
-          return &m == &mesh ? run_over_stitched(m, target, std::nullopt, diagonal)
-                             : run_on_part(m, target, diagonal);
+          return &m == &mesh ? run_over_stitched(m, target, std::nullopt, diagonal, &progress)
+                             : run_on_part(m, target, diagonal, &progress);
         },
         mesh);
     if (!outcome) throw std::logic_error("a part lost a vertex of its cut");
@@ -242,8 +246,9 @@ class Simplification_pipeline {
           fit_stage_options(job.report, stage));
     } else if (job.partitioned) {
       result.kept_locks = internal::simplify_part(
-          part, job.report.target_faces, job.whole_faces,
-          [&](Mesh& m, std::size_t target) { return run_on_part(m, target, job.whole_diagonal); });
+          part, job.report.target_faces, job.whole_faces, [&](Mesh& m, std::size_t target) {
+            return run_on_part(m, target, job.whole_diagonal, nullptr);
+          });
     } else {
       result.outcome = run_policy(part, job.report.target_faces, m_options, nullptr);
       part.collect_garbage();
@@ -290,7 +295,7 @@ class Simplification_pipeline {
                                           ? std::optional<Mesh>(internal::read_raw_mesh<Point>(
                                                 internal::job_input_as_cut_file(folder)))
                                           : std::nullopt,
-                                      job.whole_diagonal);
+                                      job.whole_diagonal, nullptr);
         } else {
           report.parts = 1;
           outcome = run_policy(mesh, report.target_faces, m_options, nullptr);
@@ -385,22 +390,26 @@ class Simplification_pipeline {
   // A part of a partitioned run of a mesh of that diagonal, its cut vertices locked; a bound is
   // certified against the part as cut, in the whole's lengths. The parts then keep it together:
   // a point of the input lies in some part's input, within tau of that part's output, and a point
-  // of the output in some part's output, within tau of that part's input. Progress is reported
-  // once, for the whole.
-  internal::Policy_outcome run_on_part(Mesh& part, std::size_t target, double diagonal) const {
+  // of the output in some part's output, within tau of that part's input. Its progress goes to
+  // `progress`, the whole run's (none in a job's task, which runs alone).
+  internal::Policy_outcome run_on_part(Mesh& part, std::size_t target, double diagonal,
+                                       internal::Part_progress* progress) const {
     Simplification_options options = in_lengths_of(m_options, part, diagonal);
-    options.progress = nullptr;
+    options.progress = progress ? progress->of_part(part.number_of_faces()) : nullptr;
     return run_policy(part, target, options, nullptr);
   }
 
   // The last pass of a partitioned run, over the stitched `whole`: under a bound, certified
-  // against `input_as_cut` (keeps_input_as_cut), of that diagonal.
+  // against `input_as_cut` (keeps_input_as_cut), of that diagonal. Its progress goes to
+  // `progress`, the whole run's, when there is one (none in a job's task).
   internal::Policy_outcome run_over_stitched(Mesh& whole, std::size_t target,
                                              const std::optional<Mesh>& input_as_cut,
-                                             double diagonal) const {
+                                             double diagonal,
+                                             const internal::Part_progress* progress) const {
     const Mesh* input = input_as_cut ? &*input_as_cut : nullptr;
-    return run_policy(whole, target, in_lengths_of(m_options, input ? *input : whole, diagonal),
-                      input);
+    Simplification_options options = in_lengths_of(m_options, input ? *input : whole, diagonal);
+    if (progress) options.progress = progress->of_last_pass();
+    return run_policy(whole, target, options, input);
   }
 
   static double seconds_since(std::chrono::steady_clock::time_point start) {

@@ -589,6 +589,36 @@ TEST(SimplificationPipeline, ReportsTheProgressOfTheSimplification) {
   }
 }
 
+// A run cut in four on two threads reports while its parts run, as the whole: the face count
+// only falls, from the input's, and the fraction done is the whole's at that count.
+TEST(PartitionedRun, ReportsTheProgressOfItsPartsAsTheWhole) {
+  const Mesh sphere = loop_sphere(5);  // 20,480 faces: parts of 5,120
+  const std::size_t start = sphere.number_of_faces(), target = start / 100;
+  for (const std::string policy : {"lt", "fast", "flat-lt"}) {
+    SCOPED_TRACE(policy);
+    cgal_policies::Simplification_options options = policy_alone(policy, target);
+    options.parts = 4;
+    options.threads = 2;
+    std::vector<std::pair<double, std::size_t>> reports;  // the callback is called one at a time
+    options.progress = [&](cgal_policies::Simplification_pass pass, double done,
+                           std::size_t faces) {
+      if (pass == cgal_policies::Simplification_pass::simplification)
+        reports.emplace_back(done, faces);
+    };
+    Mesh mesh = sphere;
+    EXPECT_EQ(apps::Pipeline(options).run(mesh).parts, 4u);
+    ASSERT_FALSE(reports.empty());
+    EXPECT_GT(reports.front().second, start / 2);  // a part's report: the last pass starts lower
+    for (std::size_t i = 0; i < reports.size(); ++i) {
+      const auto [done, faces] = reports[i];
+      EXPECT_DOUBLE_EQ(done, std::min(1.0, double(start - faces) / double(start - target)));
+      if (i > 0) {
+        EXPECT_LE(faces, reports[i - 1].second);
+      }
+    }
+  }
+}
+
 // Face_count_stop_predicate in a plain edge_collapse: the target, then a deadline already passed.
 TEST(FaceCountStopPredicate, SaysWhatStoppedTheRun) {
   namespace SMS = CGAL::Surface_mesh_simplification;
