@@ -5,19 +5,20 @@
 #ifndef CGAL_POLICIES_INTERNAL_FOR_EACH_IN_PARALLEL_H
 #define CGAL_POLICIES_INTERNAL_FOR_EACH_IN_PARALLEL_H
 
+#include <algorithm>
+#include <atomic>
 #include <cstddef>
+#include <numeric>
+#include <thread>
+#include <vector>
 
 #ifdef CGAL_POLICIES_WITH_TBB
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 #else
-#include <algorithm>
-#include <atomic>
 #include <exception>
 #include <mutex>
-#include <thread>
-#include <vector>
 #endif
 
 namespace cgal_policies {
@@ -53,6 +54,28 @@ void for_each_in_parallel(std::size_t n, std::size_t threads, const Body& body) 
   for (std::thread& worker : workers) worker.join();
   if (failure) std::rethrow_exception(failure);
 #endif
+}
+
+// The same for a few heavy items of known relative `costs`: each core takes the costliest item
+// left, so that a large item does not start last while the other cores wait (a list schedule,
+// largest first). The cells of a fit's second half are of unequal sizes.
+template <class Body>
+void for_each_costliest_first(const std::vector<std::size_t>& costs, std::size_t threads,
+                              const Body& body) {
+  std::vector<std::size_t> order(costs.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return costs[a] > costs[b]; });
+  if (threads == 0) threads = (std::max)(1u, std::thread::hardware_concurrency());
+  std::atomic<std::size_t> next{0};
+  for_each_in_parallel((std::min)(threads, order.size()), threads, [&](std::size_t) {
+    for (std::size_t k; (k = next++) < order.size();) try {
+        body(order[k]);
+      } catch (...) {
+        next = order.size();
+        throw;
+      }
+  });
 }
 
 }  // namespace internal

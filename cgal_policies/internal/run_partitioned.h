@@ -154,9 +154,11 @@ Two_sided_fit_report fit_partitioned(CGAL::Surface_mesh<Point>& mesh, const Spat
                                      const InputPart& input_part) {
   using Mesh = CGAL::Surface_mesh<Point>;
   const std::vector<std::uint32_t> output_cell = face_cells(mesh, cells);
+  std::vector<std::size_t> faces_in(cells.size(), 0);
+  for (const std::uint32_t c : output_cell) ++faces_in[c];
   std::vector<Mesh> parts(cells.size());
   std::vector<Two_sided_fit_report> reports(cells.size());
-  for_each_in_parallel(parts.size(), threads, [&](std::size_t c) {
+  for_each_costliest_first(faces_in, threads, [&](std::size_t c) {
     parts[c] = mesh_part(mesh, output_cell, std::uint32_t(c));
     reports[c] = fit_part(parts[c], input_part(c), options);
   });
