@@ -6,7 +6,9 @@
 //                      (Corner_attributes.h) with their seams, within max_error and the time limit
 //   4. pieces          when no collapse is left short of the target, whole components go
 //   5. smoothing       Laplacian_smoother, within the run's bound when asked
-//   6. fit             Two_sided_fitter against the input, within the run's bound
+//   6. fit             Two_sided_fitter against the input, within the run's bound; on a
+//                      textured mesh fitted whole, the texture coordinates off the seams then
+//                      solved again against the input's
 // The mesh is left compact (garbage collected). Options: Simplification_options (every default in
 // the library); the report: Simplification_report. Deterministic: the same mesh and options give
 // the same bytes, for any thread count. A large mesh is cut into cells (Simplification_options::
