@@ -96,10 +96,8 @@ class Simplification_pipeline {
         internal::Part_progress progress(m_options.progress, mesh.number_of_faces(),
                                          report.target_faces);
         outcome = internal::run_partitioned(
-            mesh, report.target_faces, *cells, m_options.threads, [&](Mesh& m, std::size_t target) {
-              return &m == &mesh ? run_over_stitched(m, target, input_as_cut, diagonal, &progress)
-                                 : run_on_part(m, target, diagonal, &progress);
-            });
+            mesh, report.target_faces, *cells, m_options.threads,
+            part_or_stitched_runner(mesh, input_as_cut, diagonal, progress));
       }
       if (!outcome) {
         report.parts = 1;
@@ -149,14 +147,10 @@ class Simplification_pipeline {
     const double diagonal =
         internal::diagonal_length(CGAL::bbox_3(input.points.begin(), input.points.end()));
     internal::Part_progress progress(m_options.progress, input.faces, report.target_faces);
+    const std::optional<Mesh> input_as_cut;  // none: no bound out of core
     const std::optional<internal::Policy_outcome> outcome = internal::run_parts(
         cells.size(), input.faces, input.points.size(), report.target_faces, m_options.threads,
-        input_parts(spills),
-        [&](Mesh& m, std::size_t target) {
-          return &m == &mesh ? run_over_stitched(m, target, std::nullopt, diagonal, &progress)
-                             : run_on_part(m, target, diagonal, &progress);
-        },
-        mesh);
+        input_parts(spills), part_or_stitched_runner(mesh, input_as_cut, diagonal, progress), mesh);
     if (!outcome) throw std::logic_error("a part lost a vertex of its cut");
     report.stop_reason = outcome->stop_reason;
     report.pass_seconds[std::size_t(Simplification_pass::simplification)] = seconds_since(start);
@@ -412,6 +406,16 @@ class Simplification_pipeline {
     Simplification_options options = in_lengths_of(m_options, input ? *input : whole, diagonal);
     if (progress) options.progress = progress->of_last_pass();
     return run_policy(whole, target, options, input);
+  }
+
+  // The policy of a partitioned run whose stitched parts become `whole` (run_parts' run_policy):
+  // run_on_part on each part, then run_over_stitched, both with the whole run's progress.
+  auto part_or_stitched_runner(const Mesh& whole, const std::optional<Mesh>& input_as_cut,
+                               double diagonal, internal::Part_progress& progress) const {
+    return [this, &whole, &input_as_cut, diagonal, &progress](Mesh& m, std::size_t target) {
+      return &m == &whole ? run_over_stitched(m, target, input_as_cut, diagonal, &progress)
+                          : run_on_part(m, target, diagonal, &progress);
+    };
   }
 
   static double seconds_since(std::chrono::steady_clock::time_point start) {

@@ -24,6 +24,11 @@
 namespace cgal_policies {
 namespace internal {
 
+// The cores a run of `threads` (0: all of them) uses.
+inline std::size_t thread_count(std::size_t threads) {
+  return threads > 0 ? threads : (std::max)(1u, std::thread::hardware_concurrency());
+}
+
 template <class Body>
 void for_each_in_parallel(std::size_t n, std::size_t threads, const Body& body) {
 #ifdef CGAL_POLICIES_WITH_TBB
@@ -35,7 +40,7 @@ void for_each_in_parallel(std::size_t n, std::size_t threads, const Body& body) 
                       });
   });
 #else
-  if (threads == 0) threads = (std::max)(1u, std::thread::hardware_concurrency());
+  threads = thread_count(threads);
   std::atomic<std::size_t> next{0};
   std::exception_ptr failure;
   std::mutex failure_mutex;
@@ -66,9 +71,8 @@ void for_each_costliest_first(const std::vector<std::size_t>& costs, std::size_t
   std::iota(order.begin(), order.end(), std::size_t(0));
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return costs[a] > costs[b]; });
-  if (threads == 0) threads = (std::max)(1u, std::thread::hardware_concurrency());
   std::atomic<std::size_t> next{0};
-  for_each_in_parallel((std::min)(threads, order.size()), threads, [&](std::size_t) {
+  for_each_in_parallel((std::min)(thread_count(threads), order.size()), threads, [&](std::size_t) {
     for (std::size_t k; (k = next++) < order.size();) try {
         body(order[k]);
       } catch (...) {

@@ -62,11 +62,13 @@ void resolve_free_uvs(CGAL::Surface_mesh<Point>& mesh, const CGAL::Surface_mesh<
     }
   if (vertex.empty()) return;
   std::vector<typename Mesh::Face_index> face;
+  std::vector<Triangle_corners> corners;  // of face[k], the tree's triangle k
   Search::Search_triangles triangles;
   for (const auto f : mesh.faces()) {
     const Triangle_corners t = face_corners(f, mesh, mesh.points());
     triangles.emplace_back(Search::search_point(t[0]), Search::search_point(t[1]),
                            Search::search_point(t[2]));
+    corners.push_back(t);
     face.push_back(f);
   }
   Search::Search_tree tree(triangles.begin(), triangles.end());
@@ -90,11 +92,11 @@ void resolve_free_uvs(CGAL::Surface_mesh<Point>& mesh, const CGAL::Surface_mesh<
       if (!want.allFinite()) break;  // a face without texture coordinates
       const Eigen::Vector3d p = b[0] * gp[0] + b[1] * gp[1] + b[2] * gp[2];
       const auto nearest = tree.closest_point_and_primitive(Search::search_point(p));
-      const auto f = face[std::size_t(nearest.second - triangles.cbegin())];
-      const auto h = mesh.halfedge(f);
-      // Corner k sits at corner k of face_corners(f): source(h), target(h), target(next(h)).
+      const std::size_t at = std::size_t(nearest.second - triangles.cbegin());
+      const auto h = mesh.halfedge(face[at]);
+      // Corner k sits at corner k of corners[at]: source(h), target(h), target(next(h)).
       const std::array<typename Mesh::Halfedge_index, 3> fc{mesh.prev(h), h, mesh.next(h)};
-      const Triangle_corners fp = face_corners(f, mesh, mesh.points());
+      const Triangle_corners& fp = corners[at];
       const Eigen::Vector3d w = closest_barycentric(p, fp[0], fp[1], fp[2]);
       Eigen::Vector2d now = Eigen::Vector2d::Zero(), fixed = Eigen::Vector2d::Zero();
       std::array<int, 3> column{};
