@@ -10,6 +10,8 @@ bool build_mesh_from_clean_triangles(const std::vector<Point>& points,
                                      Mesh& mesh, std::size_t& unused_points,
                                      std::vector<Mesh::Vertex_index>* vertex_of_point) {
   mesh.clear();
+  // No face left (triangulation drops polygons of fewer than 3 corners): the general path says so.
+  if (polygons.empty()) return false;
   std::vector<std::size_t> corners;
   corners.reserve(3 * polygons.size());
   for (const auto& polygon : polygons) {

@@ -15,7 +15,8 @@ namespace io {
 // polygon is a triangle of three distinct points, no oriented edge is used twice, no edge has
 // more than two faces, and the faces around each point form one fan. Points no face uses are
 // left out and counted in `unused_points`. Faces, and the used points, keep the soup's order.
-// Returns false and leaves `mesh` empty when the soup is not such a mesh: it needs repair.
+// Returns false and leaves `mesh` empty when the soup has no polygon or is not such a mesh: it
+// needs repair, or has nothing to build.
 // `vertex_of_point`, when given, gets each point's vertex (a null index for an unused point).
 bool build_mesh_from_clean_triangles(const std::vector<Point>& points,
                                      const std::vector<std::vector<std::size_t>>& polygons,

@@ -275,6 +275,7 @@ TEST(CleanSoups, AClosedAndAnOpenMeshAreBuiltAsCgalBuildsThem) {
 }
 
 TEST(CleanSoups, SoupsThatNeedRepairAreLeftToCgal) {
+  EXPECT_FALSE(builds({}));                                 // nothing to build
   EXPECT_FALSE(builds({{0, 1, 2, 3}}));                     // not a triangle
   EXPECT_FALSE(builds({{0, 1, 1}}));                        // a corner twice
   EXPECT_FALSE(builds({{0, 1, 2}, {0, 1, 2}}));             // a face twice
@@ -381,6 +382,12 @@ TEST(PolygonCrossing, TheReaderTriangulatesEveryPolygonWhateverItsShape) {
   EXPECT_EQ(refusal({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}), "");
   EXPECT_EQ(refusal({{0, 2}, {2, -1}, {-1, 1}, {1, 1}, {-2, -1}}), "");
   EXPECT_EQ(refusal({{0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}}), "");
+}
+
+// A soup whose only polygon has two corners has no triangle to build: a bad input, not a mesh
+// without faces (found by fuzz_repair).
+TEST(PolygonCrossing, ASoupOfNoTriangleIsRefused) {
+  EXPECT_EQ(refusal({{0, 0}, {1, 0}}), "soup: no faces left after dropping degenerate ones");
 }
 
 // A star of 601 corners, each joined to the one 300 steps round, which crosses itself everywhere:
