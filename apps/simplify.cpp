@@ -48,6 +48,13 @@ void print_help() {
          "                        each level is measured against IN; at most "
       << kMaxFilesWrittenAtOnce
       << " levels\n"
+         "  --gltf-encoding E     how a glTF OUT stores its vertices: float (default),\n"
+         "                        quantized (KHR_mesh_quantization: 16-bit positions, 8-bit\n"
+         "                        normals and colours, 16-bit texture coordinates when all\n"
+         "                        lie in [-1, 1], float otherwise) or meshopt (quantized,\n"
+         "                        then compressed: EXT_meshopt_compression); a viewer must\n"
+         "                        support the extensions, which the file requires; a glTF\n"
+         "                        OUT only\n"
          "  --policy NAME         "
       << policy_names()
       << " (default: the default pipeline,\n"
@@ -135,7 +142,8 @@ std::vector<std::string> write_mesh_and_snapshot(const Mesh& original, const Mes
                                                  const std::string& name,
                                                  const std::optional<Snapshot_request>& snapshot,
                                                  const std::string& output,
-                                                 const Material_references& materials) {
+                                                 const Material_references& materials,
+                                                 Gltf_encoding encoding) {
   // An interrupt before OUT is in place removes the new picture too.
   std::optional<Removed_on_interrupt> picture_without_mesh;
   if (snapshot) {
@@ -143,7 +151,7 @@ std::vector<std::string> write_mesh_and_snapshot(const Mesh& original, const Mes
     picture_without_mesh.emplace(snapshot->png);
   }
   try {
-    return write_mesh_atomically(simplified, output, materials);
+    return write_mesh_atomically(simplified, output, materials, encoding);
   } catch (...) {
     std::error_code ignored;
     if (snapshot) std::filesystem::remove(snapshot->png, ignored);
@@ -191,8 +199,8 @@ int run_lod_chain(const Simplify_request& request, const Read_input& input) {
   for (std::size_t k = 0; k < levels.size(); ++k) chain.push_back({&levels[k], coverage[k]});
   const Stopwatch writing;
   // Even with --quiet: OUT lacks something IN had.
-  for (const std::string& loss :
-       write_lod_chain_atomically(chain, request.output, input.report.materials))
+  for (const std::string& loss : write_lod_chain_atomically(
+           chain, request.output, input.report.materials, request.gltf_encoding))
     std::cerr << "simplify: warning: " << loss << '\n';
   const double write_seconds = writing.seconds();
   if (request.quiet && !request.json) return exit_success;
@@ -299,8 +307,8 @@ int run(int argc, char** argv) {
   const std::string name = pipeline_name(options);
   const Stopwatch writing;
   // Even with --quiet: OUT lacks something IN had.
-  for (const std::string& loss :
-       write_mesh_and_snapshot(original, mesh, name, snapshot, output, read_report.materials))
+  for (const std::string& loss : write_mesh_and_snapshot(
+           original, mesh, name, snapshot, output, read_report.materials, request.gltf_encoding))
     std::cerr << "simplify: warning: " << loss << '\n';
   const double write_seconds = writing.seconds();
 

@@ -12,6 +12,19 @@
 #include <vector>
 
 namespace apps {
+namespace {
+
+// --gltf-encoding float|quantized|meshopt, checked against OUT once it is known.
+std::optional<Gltf_encoding> take_gltf_encoding(Command_line& cli) {
+  const std::optional<std::string> name = cli.take_value("gltf-encoding");
+  if (!name) return std::nullopt;
+  if (*name == "float") return Gltf_encoding::float32;
+  if (*name == "quantized") return Gltf_encoding::quantized;
+  if (*name == "meshopt") return Gltf_encoding::meshopt;
+  throw App_error(exit_usage, "--gltf-encoding must be float, quantized or meshopt");
+}
+
+}  // namespace
 
 Pipeline_request take_pipeline_request(Command_line& cli) {
   Pipeline_request request;
@@ -61,6 +74,7 @@ Simplify_request take_simplify_request(Command_line& cli) {
   request.out_of_core = cli.take_flag("out-of-core");
   const std::optional<std::string> lod = cli.take_value("lod");
   if (lod) request.lod_ratios = parse_lod_ratios(*lod);
+  const std::optional<Gltf_encoding> gltf_encoding = take_gltf_encoding(cli);
   const cgal_policies::Simplification_options& options = request.options;
   if (request.out_of_core && (!runs_out_of_core(options) || request.measure))
     throw App_error(exit_usage,
@@ -89,6 +103,9 @@ Simplify_request take_simplify_request(Command_line& cli) {
   if (samples) request.samples = std::size_t(*samples);
   request.input = args[0];
   request.output = args[1];
+  if (gltf_encoding && !is_gltf_file(request.output))
+    throw App_error(exit_usage, "--gltf-encoding needs a glTF OUT (.gltf or .glb)");
+  request.gltf_encoding = gltf_encoding.value_or(Gltf_encoding::float32);
   for (const std::string& output :
        lod ? cgal_policies::io::lod_level_paths(request.output, request.lod_ratios.size())
            : std::vector<std::string>{request.output})

@@ -4,6 +4,8 @@
 #define CGAL_POLICIES_APPS_CLI_SIMPLIFY_REQUEST_H
 
 #include "Command_line.h"
+#include "app_types.h"
+#include "io/mesh_io.h"
 #include "pipeline/policy_registry.h"
 
 #include <cgal_policies/Simplification_options.h>
@@ -36,12 +38,15 @@ struct Simplify_request {
   bool out_of_core = false;  // read IN in passes (run_streamed), never whole
   // --lod: the chain's levels as shares of IN's faces, finest first (lod_chain.h); empty without.
   std::vector<double> lod_ratios;
+  // --gltf-encoding: how a glTF OUT stores its vertices (gltf_io.h).
+  Gltf_encoding gltf_encoding = Gltf_encoding::float32;
   std::string input, output;
 };
 
 // Takes every option of simplify but --help and the snapshot's, then IN OUT [RATIO]; App_error
 // with exit_usage (bad command line) or Io_error (OUT's folder is missing) otherwise. With --lod,
 // the target is the first level's and every level's file is checked (lod_level_paths).
+// --gltf-encoding needs a glTF OUT.
 Simplify_request take_simplify_request(Command_line& cli);
 
 }  // namespace apps

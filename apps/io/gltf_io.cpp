@@ -8,6 +8,7 @@
 #include "obj_material_looks.h"
 
 #include <tiny_gltf.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <array>
@@ -21,6 +22,7 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <type_traits>
 #include <vector>
 
 namespace cgal_policies {
@@ -638,17 +640,90 @@ void pass_looks_through(tinygltf::Model& model, const tinygltf::Model& looks,
   }
 }
 
-// A level's mesh: its wedges' attributes, its indices, and a primitive per material of `model`
-// (whose materials are in place), in the order of the material indices (none last), each of its
-// triangles in the mesh's order; every primitive shares the wedges.
-tinygltf::Mesh gltf_mesh(tinygltf::Model& model, const Wedge_mesh& wedges) {
-  tinygltf::Primitive shape;
-  shape.mode = TINYGLTF_MODE_TRIANGLES;
+template <class Integer>
+constexpr int component_type_of() {
+  if constexpr (std::is_same_v<Integer, std::int8_t>) return kByte;
+  if constexpr (std::is_same_v<Integer, std::uint8_t>) return kUnsignedByte;
+  if constexpr (std::is_same_v<Integer, std::int16_t>) return kShort;
+  if constexpr (std::is_same_v<Integer, std::uint16_t>) return kUnsignedShort;
+  return TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+}
+
+// An integer vertex attribute of every wedge, `type`'s components each, every element padded to a
+// multiple of 4 bytes: glTF aligns each element of a vertex attribute so.
+template <class Integer>
+int append_integer_attribute(tinygltf::Model& model, const std::vector<Integer>& values, int type,
+                             bool normalized) {
+  const std::size_t components = std::size_t(tinygltf::GetNumComponentsInType(std::uint32_t(type)));
+  const std::size_t count = values.size() / components, element = components * sizeof(Integer);
+  const std::size_t stride = (element + 3) / 4 * 4;
+  std::vector<unsigned char> bytes(count * stride, 0);
+  for (std::size_t i = 0; i < count; ++i)
+    std::memcpy(bytes.data() + i * stride, values.data() + i * components, element);
+  const int view = append_view(model, bytes.data(), bytes.size(), TINYGLTF_TARGET_ARRAY_BUFFER);
+  model.bufferViews[std::size_t(view)].byteStride = stride;
+  const int accessor = append_accessor(model, view, 0, component_type_of<Integer>(), type, count);
+  model.accessors[std::size_t(accessor)].normalized = normalized;
+  return accessor;
+}
+
+// `value` (NaN: `none`) as a normalized integer, to the nearest step: an unsigned one holds
+// [0, 1], a signed one [-1, 1].
+template <class Integer>
+Integer normalized_integer(double value, double none) {
+  constexpr double largest = std::numeric_limits<Integer>::max();
+  constexpr double lowest = std::is_signed_v<Integer> ? -1.0 : 0.0;
+  const double v = std::isnan(value) ? none : std::clamp(value, lowest, 1.0);
+  return Integer(std::lround(v * largest));
+}
+
+// KHR_mesh_quantization's positions: unsigned 16-bit steps from `origin` along each axis, the
+// step the same on every axis, so that the node's scale, which dequantizes them, is uniform and
+// leaves the normals' directions as they are.
+struct Position_grid {
+  std::array<double, 3> origin;
+  double step;
+};
+
+Position_grid position_grid(const std::vector<Point>& points) {
+  std::array<double, 3> lowest, highest;
+  lowest.fill(std::numeric_limits<double>::infinity());
+  highest.fill(-std::numeric_limits<double>::infinity());
+  for (const Point& p : points)
+    for (int axis = 0; axis < 3; ++axis) {
+      lowest[std::size_t(axis)] = std::min(lowest[std::size_t(axis)], p[axis]);
+      highest[std::size_t(axis)] = std::max(highest[std::size_t(axis)], p[axis]);
+    }
+  double extent = 0;
+  for (std::size_t axis = 0; axis < 3; ++axis)
+    extent = std::max(extent, highest[axis] - lowest[axis]);
+  return {lowest, extent > 0 ? extent / 65535 : 1};
+}
+
+// The positions on `grid`, their bounds (which the spec requires) those of the integers.
+int append_quantized_positions(tinygltf::Model& model, const std::vector<Point>& points,
+                               const Position_grid& grid) {
+  std::vector<std::uint16_t> steps;
+  for (const Point& p : points)
+    for (int axis = 0; axis < 3; ++axis)
+      steps.push_back(std::uint16_t(
+          std::min(65535.0, std::round((p[axis] - grid.origin[std::size_t(axis)]) / grid.step))));
+  const int position = append_integer_attribute(model, steps, TINYGLTF_TYPE_VEC3, false);
+  tinygltf::Accessor& bounds = model.accessors[std::size_t(position)];
+  bounds.minValues.assign(3, 65535);
+  bounds.maxValues.assign(3, 0);
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    bounds.minValues[i % 3] = std::min(bounds.minValues[i % 3], double(steps[i]));
+    bounds.maxValues[i % 3] = std::max(bounds.maxValues[i % 3], double(steps[i]));
+  }
+  return position;
+}
+
+int append_float_positions(tinygltf::Model& model, const std::vector<Point>& points) {
   std::vector<float> positions;
-  for (const Point& p : wedges.points)
+  for (const Point& p : points)
     for (double c : {p.x(), p.y(), p.z()}) positions.push_back(float(c));
   const int position = append_float_attribute(model, positions, TINYGLTF_TYPE_VEC3);
-  shape.attributes["POSITION"] = position;
   // The spec requires the bounds of the positions, which are these floats'.
   tinygltf::Accessor& bounds = model.accessors[std::size_t(position)];
   bounds.minValues.assign(3, std::numeric_limits<double>::infinity());
@@ -657,53 +732,141 @@ tinygltf::Mesh gltf_mesh(tinygltf::Model& model, const Wedge_mesh& wedges) {
     bounds.minValues[i % 3] = std::min(bounds.minValues[i % 3], double(positions[i]));
     bounds.maxValues[i % 3] = std::max(bounds.maxValues[i % 3], double(positions[i]));
   }
-  if (!wedges.normals.empty()) {
-    std::vector<float> normals;
-    for (const Kernel::Vector_3& n : wedges.normals)
-      for (double c : {n.x(), n.y(), n.z()}) normals.push_back(float(c));
-    shape.attributes["NORMAL"] = append_float_attribute(model, normals, TINYGLTF_TYPE_VEC3);
-  }
-  if (!wedges.uvs.empty()) {
-    std::vector<float> uvs;
-    for (const auto& uv : wedges.uvs) {
-      const std::array<double, 2> flipped = texture_coordinates_of_gltf(uv[0], uv[1]);
-      uvs.insert(uvs.end(), {float(flipped[0]), float(flipped[1])});
-    }
-    shape.attributes["TEXCOORD_0"] = append_float_attribute(model, uvs, TINYGLTF_TYPE_VEC2);
-  }
-  if (!wedges.colors.empty()) {
-    std::vector<float> colors;
-    for (const auto& color : wedges.colors)
-      for (double c : color) colors.push_back(float(c));
-    // A corner without a colour is white, which leaves the material's colour as it is.
-    shape.attributes["COLOR_0"] = append_float_attribute(model, colors, TINYGLTF_TYPE_VEC4, 1);
-  }
+  return position;
+}
 
-  std::map<std::uint32_t, std::vector<std::uint32_t>> indices_of_material;
+// The normals; quantized, made unit and stored as normalized signed bytes, as gltfpack writes them,
+// a normal without a direction (a corner without one) being 0.
+int append_normals(tinygltf::Model& model, const std::vector<Kernel::Vector_3>& normals,
+                   bool quantized) {
+  if (!quantized) {
+    std::vector<float> floats;
+    for (const Kernel::Vector_3& n : normals)
+      for (double c : {n.x(), n.y(), n.z()}) floats.push_back(float(c));
+    return append_float_attribute(model, floats, TINYGLTF_TYPE_VEC3);
+  }
+  std::vector<std::int8_t> bytes;
+  for (const Kernel::Vector_3& n : normals) {
+    const double length = std::sqrt(n.squared_length());
+    for (double c : {n.x(), n.y(), n.z()})
+      bytes.push_back(
+          length > 0 && std::isfinite(length) ? std::int8_t(std::lround(c / length * 127)) : 0);
+  }
+  return append_integer_attribute(model, bytes, TINYGLTF_TYPE_VEC3, true);
+}
+
+// The texture coordinates in glTF's convention; quantized, as normalized unsigned shorts when all
+// lie in [0, 1], or signed ones when all lie in [-1, 1], which is all they can hold without a
+// texture transform on every material; float otherwise.
+int append_uvs(tinygltf::Model& model, const std::vector<std::array<double, 2>>& wedge_uvs,
+               bool quantized) {
+  std::vector<double> uvs;
+  for (const auto& uv : wedge_uvs) {
+    const std::array<double, 2> flipped = texture_coordinates_of_gltf(uv[0], uv[1]);
+    uvs.insert(uvs.end(), flipped.begin(), flipped.end());
+  }
+  const auto all_within = [&uvs](double lowest) {
+    return std::all_of(uvs.begin(), uvs.end(),
+                       [lowest](double c) { return std::isnan(c) || (c >= lowest && c <= 1); });
+  };
+  const auto normalized = [&uvs, &model](auto integer) {
+    std::vector<decltype(integer)> steps;
+    for (double c : uvs) steps.push_back(normalized_integer<decltype(integer)>(c, 0));
+    return append_integer_attribute(model, steps, TINYGLTF_TYPE_VEC2, true);
+  };
+  if (quantized && all_within(0)) return normalized(std::uint16_t());
+  if (quantized && all_within(-1)) return normalized(std::int16_t());
+  return append_float_attribute(model, std::vector<float>(uvs.begin(), uvs.end()),
+                                TINYGLTF_TYPE_VEC2);
+}
+
+// RGBA colours; quantized, as normalized unsigned bytes, as gltfpack writes them. A corner without
+// a colour is white, which leaves the material's colour as it is.
+int append_colors(tinygltf::Model& model, const std::vector<std::array<double, 4>>& wedge_colors,
+                  bool quantized) {
+  if (!quantized) {
+    std::vector<float> colors;
+    for (const auto& color : wedge_colors)
+      for (double c : color) colors.push_back(float(c));
+    return append_float_attribute(model, colors, TINYGLTF_TYPE_VEC4, 1);
+  }
+  std::vector<std::uint8_t> bytes;
+  for (const auto& color : wedge_colors)
+    for (double c : color) bytes.push_back(normalized_integer<std::uint8_t>(c, 1));
+  return append_integer_attribute(model, bytes, TINYGLTF_TYPE_VEC4, true);
+}
+
+// The triangles' indices as one view, `Index` each, and a primitive per material of `model`
+// (whose materials are in place) reading its share of them, in the order of the material indices
+// (none last), each of its triangles in the mesh's order; every primitive has `shape`'s
+// attributes.
+template <class Index>
+std::vector<tinygltf::Primitive> primitives_per_material(tinygltf::Model& model,
+                                                         const Wedge_mesh& wedges,
+                                                         const tinygltf::Primitive& shape) {
+  std::map<std::uint32_t, std::vector<Index>> indices_of_material;
   for (std::size_t t = 0; t < wedges.triangles.size(); ++t) {
     const std::uint32_t material =
         wedges.materials.empty() ? Corner_tables::kNoMaterial : wedges.materials[t];
     auto& indices = indices_of_material[material];
     indices.insert(indices.end(), wedges.triangles[t].begin(), wedges.triangles[t].end());
   }
-  std::vector<std::uint32_t> all_indices;
+  std::vector<Index> all_indices;
   for (const auto& group : indices_of_material)
     all_indices.insert(all_indices.end(), group.second.begin(), group.second.end());
-  const int index_view =
-      append_view(model, all_indices.data(), all_indices.size() * sizeof(std::uint32_t),
-                  TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-  tinygltf::Mesh mesh;
+  const int index_view = append_view(model, all_indices.data(), all_indices.size() * sizeof(Index),
+                                     TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+  std::vector<tinygltf::Primitive> primitives;
   std::size_t offset = 0;
   for (const auto& [material, indices] : indices_of_material) {
     tinygltf::Primitive primitive = shape;
     primitive.indices =
-        append_accessor(model, index_view, offset * sizeof(std::uint32_t),
-                        TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, indices.size());
+        append_accessor(model, index_view, offset * sizeof(Index), component_type_of<Index>(),
+                        TINYGLTF_TYPE_SCALAR, indices.size());
     primitive.material = material < model.materials.size() ? int(material) : -1;
     offset += indices.size();
-    mesh.primitives.push_back(std::move(primitive));
+    primitives.push_back(std::move(primitive));
   }
-  return mesh;
+  return primitives;
+}
+
+// A level's mesh and the node holding it: its wedges' attributes, its indices, and a primitive per
+// material (primitives_per_material); every primitive shares the wedges. Quantized, the node's
+// transform dequantizes the positions (KHR_mesh_quantization).
+void add_level(tinygltf::Model& model, const Wedge_mesh& wedges, bool quantized) {
+  tinygltf::Node node;
+  tinygltf::Primitive shape;
+  shape.mode = TINYGLTF_MODE_TRIANGLES;
+  if (quantized) {
+    const Position_grid grid = position_grid(wedges.points);
+    shape.attributes["POSITION"] = append_quantized_positions(model, wedges.points, grid);
+    node.translation.assign(grid.origin.begin(), grid.origin.end());
+    node.scale.assign(3, grid.step);
+  } else {
+    shape.attributes["POSITION"] = append_float_positions(model, wedges.points);
+  }
+  if (!wedges.normals.empty())
+    shape.attributes["NORMAL"] = append_normals(model, wedges.normals, quantized);
+  if (!wedges.uvs.empty())
+    shape.attributes["TEXCOORD_0"] = append_uvs(model, wedges.uvs, quantized);
+  if (!wedges.colors.empty())
+    shape.attributes["COLOR_0"] = append_colors(model, wedges.colors, quantized);
+  tinygltf::Mesh mesh;
+  // Quantized, 16-bit indices when every one fits: glTF reserves 65535, a type's largest value.
+  mesh.primitives = quantized && wedges.points.size() <= 65535
+                        ? primitives_per_material<std::uint16_t>(model, wedges, shape)
+                        : primitives_per_material<std::uint32_t>(model, wedges, shape);
+  model.meshes.push_back(std::move(mesh));
+  node.mesh = int(model.meshes.size() - 1);
+  model.nodes.push_back(std::move(node));
+}
+
+// Declares `extension` used, and required when `required`, unless it is already.
+void declare_extension(tinygltf::Model& model, const std::string& extension, bool required) {
+  for (std::vector<std::string>* list : {&model.extensionsUsed, &model.extensionsRequired}) {
+    if (list == &model.extensionsRequired && !required) continue;
+    if (std::find(list->begin(), list->end(), extension) == list->end()) list->push_back(extension);
+  }
 }
 
 }  // namespace
@@ -763,7 +926,7 @@ Gltf_soup read_gltf(const std::string& path, bool binary) {
   return read;
 }
 
-std::string gltf_bytes(const std::vector<Lod_level>& levels, bool binary,
+std::string gltf_bytes(const std::vector<Lod_level>& levels, bool binary, Gltf_encoding encoding,
                        const Material_references& materials, const std::string& output_folder,
                        std::vector<std::string>& left_out) {
   std::vector<Wedge_mesh> wedges;
@@ -778,11 +941,9 @@ std::string gltf_bytes(const std::vector<Lod_level>& levels, bool binary,
       materials.gltf ? materials.gltf
                      : obj_material_looks(materials, !wedges.front().uvs.empty(), left_out);
   pass_looks_through(model, *looks, fs::absolute(output_folder).lexically_normal());
-  for (const Wedge_mesh& level : wedges) {
-    model.meshes.push_back(gltf_mesh(model, level));
-    model.nodes.emplace_back();
-    model.nodes.back().mesh = int(model.meshes.size() - 1);
-  }
+  const bool quantized = encoding != Gltf_encoding::float32;
+  for (const Wedge_mesh& level : wedges) add_level(model, level, quantized);
+  if (quantized) declare_extension(model, "KHR_mesh_quantization", true);
   // The finest level is the scene's; the others are reached through its MSFT_lod alone.
   model.scenes.emplace_back();
   model.scenes.back().nodes.push_back(0);
@@ -798,8 +959,13 @@ std::string gltf_bytes(const std::vector<Lod_level>& levels, bool binary,
     model.nodes[0].extras = tinygltf::Value(
         tinygltf::Value::Object{{"MSFT_screencoverage", tinygltf::Value(coverage)}});
     // A glTF input's looks may declare it already (a material's levels of detail).
-    std::vector<std::string>& used = model.extensionsUsed;
-    if (std::find(used.begin(), used.end(), "MSFT_lod") == used.end()) used.push_back("MSFT_lod");
+    declare_extension(model, "MSFT_lod", false);
+  }
+  // Every view is in place: the compression moves them into a fallback buffer.
+  nlohmann::json compression;
+  if (encoding == Gltf_encoding::meshopt) {
+    compression = encode_meshopt_views(model);
+    declare_extension(model, "EXT_meshopt_compression", true);
   }
 
   tinygltf::TinyGLTF writer;
@@ -807,7 +973,9 @@ std::string gltf_bytes(const std::vector<Lod_level>& levels, bool binary,
   writer.SetImageWriter(nullptr, nullptr);
   std::ostringstream bytes;
   writer.WriteGltfSceneToStream(&model, bytes, /*prettyPrint=*/true, binary);
-  return bytes.str();
+  return encoding == Gltf_encoding::meshopt
+             ? with_meshopt_extensions(bytes.str(), binary, compression)
+             : bytes.str();
 }
 
 }  // namespace io

@@ -43,20 +43,30 @@ struct Gltf_soup {
 Gltf_soup read_gltf(const std::string& path, bool binary);
 
 // The bytes of a glTF file (GLB when `binary`) holding `levels`, each a mesh of its own and a node
-// holding it: one vertex per wedge (Wedge_mesh.h), float32 positions, normals, texture coordinates
-// (v made 1 - v, as glTF counts it from the image's top) and RGBA colours (glTF has no doubles; a
-// corner without a value gets 0, or white for a colour, as glTF has no "none"), u32 indices, one
-// primitive per material in the order of the material indices. The scene holds the first level's
-// node; with more than one level, that node carries MSFT_lod (the extension Microsoft and
-// Babylon.js read; used, not required, so that other viewers show the first level) naming the
-// other levels' nodes in order, and extras.MSFT_screencoverage their screen coverages, one per
-// level. Materials, shared by the levels: those of `materials.gltf` when the mesh was read from
-// glTF, passed through with their textures, samplers and images (an image the input held is
-// embedded, an image file is named by its path relative to `output_folder`); otherwise those of
-// obj_material_looks (obj_material_looks.h), their diffuse maps embedded as base colour textures
-// when the meshes have texture coordinates, and `left_out` gets a line for each map left out. A
-// .gltf file holds its buffer, embedded images included, as a base64 data URI.
-std::string gltf_bytes(const std::vector<Lod_level>& levels, bool binary,
+// holding it: one vertex per wedge (Wedge_mesh.h), one primitive per material in the order of the
+// material indices. A corner without a value gets 0, or white for a colour, as glTF has no "none";
+// texture coordinates are written with v made 1 - v, as glTF counts it from the image's top.
+// `encoding` says how the vertices are stored:
+// - float32: float positions, normals, texture coordinates and RGBA colours (glTF has no
+//   doubles), u32 indices.
+// - quantized (KHR_mesh_quantization, required): positions as u16 steps of 1/65535 of the level's
+//   largest bounding-box side, the level's node translated to the box's lowest corner and scaled
+//   by the step; unit normals as normalized i8; texture coordinates as normalized u16 when every
+//   one lies in [0, 1], normalized i16 when every one lies in [-1, 1], float otherwise; colours as
+//   normalized u8; u16 indices when the level has
+//   at most 65535 vertices, u32 otherwise. Each vertex attribute's elements padded to 4 bytes.
+// - meshopt: the quantized views compressed by meshoptimizer (EXT_meshopt_compression, required;
+//   encode_meshopt_views), their uncompressed layout in a fallback buffer without data.
+// The scene holds the first level's node; with more than one level, that node carries MSFT_lod (the
+// extension Microsoft and Babylon.js read; used, not required, so that other viewers show the first
+// level) naming the other levels' nodes in order, and extras.MSFT_screencoverage their screen
+// coverages, one per level. Materials, shared by the levels: those of `materials.gltf` when the
+// mesh was read from glTF, passed through with their textures, samplers and images (an image the
+// input held is embedded, an image file is named by its path relative to `output_folder`);
+// otherwise those of obj_material_looks (obj_material_looks.h), their diffuse maps embedded as base
+// colour textures when the meshes have texture coordinates, and `left_out` gets a line for each map
+// left out. A .gltf file holds its buffer, embedded images included, as a base64 data URI.
+std::string gltf_bytes(const std::vector<Lod_level>& levels, bool binary, Gltf_encoding encoding,
                        const Material_references& materials, const std::string& output_folder,
                        std::vector<std::string>& left_out);
 

@@ -7,8 +7,10 @@
 #include <tiny_gltf.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <utility>
 #include <vector>
 
@@ -72,7 +74,95 @@ std::vector<unsigned char> decoded(const std::string& path, const tinygltf::Mode
   return bytes;
 }
 
+std::size_t aligned_to_4(std::size_t size) { return (size + 3) / 4 * 4; }
+
+// `count` indices of `stride` bytes (2 or 4), a triangle list, as meshopt_encodeIndexBuffer's
+// mode TRIANGLES encodes them.
+std::vector<unsigned char> encoded_triangles(const unsigned char* bytes, std::size_t count,
+                                             std::size_t stride) {
+  std::vector<unsigned> indices(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    if (stride == 4) {
+      std::memcpy(&indices[i], bytes + 4 * i, 4);
+      continue;
+    }
+    std::uint16_t index = 0;
+    std::memcpy(&index, bytes + 2 * i, 2);
+    indices[i] = index;
+  }
+  const std::size_t vertices =
+      indices.empty() ? 0 : std::size_t(*std::max_element(indices.begin(), indices.end())) + 1;
+  std::vector<unsigned char> encoded(meshopt_encodeIndexBufferBound(count, vertices));
+  encoded.resize(meshopt_encodeIndexBuffer(encoded.data(), encoded.size(), indices.data(), count));
+  return encoded;
+}
+
+std::vector<unsigned char> encoded_attributes(const unsigned char* bytes, std::size_t count,
+                                              std::size_t stride) {
+  std::vector<unsigned char> encoded(meshopt_encodeVertexBufferBound(count, stride));
+  encoded.resize(meshopt_encodeVertexBuffer(encoded.data(), encoded.size(), bytes, count, stride));
+  return encoded;
+}
+
 }  // namespace
+
+nlohmann::json encode_meshopt_views(tinygltf::Model& model) {
+  // A view's element size, when it has no byteStride: its accessor's (one per view, or an index
+  // view's several, of one type).
+  std::vector<std::size_t> element_size(model.bufferViews.size(), 0);
+  for (const tinygltf::Accessor& accessor : model.accessors)
+    if (accessor.bufferView >= 0)
+      element_size[std::size_t(accessor.bufferView)] =
+          std::size_t(tinygltf::GetComponentSizeInBytes(std::uint32_t(accessor.componentType)) *
+                      tinygltf::GetNumComponentsInType(std::uint32_t(accessor.type)));
+  const std::vector<unsigned char> source = std::move(model.buffers[0].data);
+  std::vector<unsigned char>& packed = model.buffers[0].data;
+  packed.clear();
+  nlohmann::json views = nlohmann::json::object();
+  std::size_t fallback_length = 0;
+  for (std::size_t v = 0; v < model.bufferViews.size(); ++v) {
+    tinygltf::BufferView& view = model.bufferViews[v];
+    const unsigned char* bytes = source.data() + view.byteOffset;
+    packed.resize(aligned_to_4(packed.size()), 0);
+    const bool attributes = view.target == TINYGLTF_TARGET_ARRAY_BUFFER;
+    if (!attributes && view.target != TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER) {
+      view.byteOffset = packed.size();
+      packed.insert(packed.end(), bytes, bytes + view.byteLength);
+      continue;
+    }
+    const std::size_t stride = view.byteStride > 0 ? view.byteStride : element_size[v];
+    const std::size_t count = view.byteLength / stride;
+    const std::vector<unsigned char> encoded = attributes ? encoded_attributes(bytes, count, stride)
+                                                          : encoded_triangles(bytes, count, stride);
+    views[std::to_string(v)] = {{"buffer", 0},
+                                {"byteOffset", packed.size()},
+                                {"byteLength", encoded.size()},
+                                {"byteStride", stride},
+                                {"count", count},
+                                {"mode", attributes ? "ATTRIBUTES" : "TRIANGLES"}};
+    packed.insert(packed.end(), encoded.begin(), encoded.end());
+    fallback_length = aligned_to_4(fallback_length);
+    view.buffer = 1;
+    view.byteOffset = fallback_length;
+    fallback_length += view.byteLength;
+  }
+  model.buffers.resize(2);
+  return {{"bufferViews", views},
+          {"fallback",
+           {{"byteLength", fallback_length},
+            {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}}}};
+}
+
+std::string with_meshopt_extensions(std::string bytes, bool binary,
+                                    const nlohmann::json& extensions) {
+  return with_edited_json(std::move(bytes), binary, [&extensions](nlohmann::json& gltf) {
+    for (const auto& [view, compression] : extensions["bufferViews"].items())
+      gltf["bufferViews"][std::stoul(view)]["extensions"]["EXT_meshopt_compression"] = compression;
+    // tinygltf gave the fallback buffer an empty data URI; it has no uri at all.
+    gltf["buffers"][1] = extensions["fallback"];
+    return true;
+  });
+}
 
 std::string with_loadable_fallback_buffers(std::string bytes, bool binary) {
   if (bytes.find("\"fallback\"") == std::string::npos) return bytes;

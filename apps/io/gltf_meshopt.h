@@ -1,7 +1,10 @@
 // EXT_meshopt_compression, which gltfpack's -c output and other glTF pipelines write: each
-// compressed bufferView is decoded by Debian's meshoptimizer before the reader looks at it.
+// compressed bufferView is decoded by Debian's meshoptimizer before the reader looks at it, and
+// encoded by it for the writer.
 #ifndef CGAL_POLICIES_IO_GLTF_MESHOPT_H
 #define CGAL_POLICIES_IO_GLTF_MESHOPT_H
+
+#include <nlohmann/json_fwd.hpp>
 
 #include <string>
 
@@ -25,6 +28,20 @@ std::string with_loadable_fallback_buffers(std::string bytes, bool binary);
 // Io_error (unreadable input, "<path>: <cause>") when a view's compressed bytes are out of range
 // or do not decode.
 void decode_meshopt_views(const std::string& path, tinygltf::Model& model);
+
+// Compresses the vertex attribute views (mode ATTRIBUTES, each element a multiple of 4 bytes) and
+// triangle index views (mode TRIANGLES) of `model`, whose views are all in buffer 0, with
+// meshoptimizer's encoders, as gltfpack -c does: the compressed bytes go to buffer 0, aligned to
+// 4 bytes, and each view is moved into a new buffer 1, the fallback the extension names, which
+// holds no data (so EXT_meshopt_compression must be required). Other views (images) stay in
+// buffer 0 as they are. Returns what tinygltf 2.7 cannot write, for with_meshopt_extensions: the
+// views' extension objects and the fallback buffer.
+nlohmann::json encode_meshopt_views(tinygltf::Model& model);
+
+// The bytes of the glTF file (a GLB when `binary`) that tinygltf 2.7 wrote for a model
+// encode_meshopt_views compressed, with `extensions`, its result, in the JSON.
+std::string with_meshopt_extensions(std::string bytes, bool binary,
+                                    const nlohmann::json& extensions);
 
 }  // namespace io
 }  // namespace cgal_policies

@@ -182,9 +182,10 @@ bool write_bytes(const std::string& path, const std::string& bytes) {
 // One glTF file holding the levels (gltf_bytes); returns the textures left out.
 std::vector<std::string> write_gltf_atomically(const std::vector<Lod_level>& levels,
                                                const std::string& path,
-                                               const Material_references& materials) {
+                                               const Material_references& materials,
+                                               Gltf_encoding encoding) {
   std::vector<std::string> left_out;
-  const std::string bytes = gltf_bytes(levels, lower_extension(path) == ".glb", materials,
+  const std::string bytes = gltf_bytes(levels, lower_extension(path) == ".glb", encoding, materials,
                                        fs::absolute(path).parent_path().string(), left_out);
   write_atomically(path,
                    [&](const std::string& temporary) { return write_bytes(temporary, bytes); });
@@ -294,14 +295,18 @@ Mesh triangle_mesh_from_soup(const std::string& path, std::vector<Point>& points
 }
 
 std::vector<std::string> write_mesh_atomically(const Mesh& mesh, const std::string& path,
-                                               const Material_references& materials) {
+                                               const Material_references& materials,
+                                               Gltf_encoding encoding) {
   const std::vector<Lod_level> level = {{&mesh, 0}};
-  if (is_gltf(lower_extension(path))) return write_gltf_atomically(level, path, materials);
+  if (is_gltf(lower_extension(path)))
+    return write_gltf_atomically(level, path, materials, encoding);
   write_files_atomically(level, {path}, materials);
   return {};
 }
 
-bool holds_lod_chain(const std::string& path) { return is_gltf(lower_extension(path)); }
+bool is_gltf_file(const std::string& path) { return is_gltf(lower_extension(path)); }
+
+bool holds_lod_chain(const std::string& path) { return is_gltf_file(path); }
 
 std::vector<std::string> lod_level_paths(const std::string& path, std::size_t levels) {
   if (holds_lod_chain(path)) return {path};
@@ -316,8 +321,9 @@ std::vector<std::string> lod_level_paths(const std::string& path, std::size_t le
 
 std::vector<std::string> write_lod_chain_atomically(const std::vector<Lod_level>& levels,
                                                     const std::string& path,
-                                                    const Material_references& materials) {
-  if (holds_lod_chain(path)) return write_gltf_atomically(levels, path, materials);
+                                                    const Material_references& materials,
+                                                    Gltf_encoding encoding) {
+  if (holds_lod_chain(path)) return write_gltf_atomically(levels, path, materials, encoding);
   write_files_atomically(levels, lod_level_paths(path, levels.size()), materials);
   return {};
 }

@@ -45,6 +45,9 @@ std::string lower_extension(const std::string& path);
 
 bool has_supported_mesh_extension(const std::string& path);
 
+// Whether the file of this name is glTF (.gltf, .glb).
+bool is_gltf_file(const std::string& path);
+
 // Whether write_mesh_atomically writes a mesh's corner attributes to a file of this name (OBJ,
 // PLY, glTF).
 bool writes_corner_attributes(const std::string& path);
@@ -62,16 +65,23 @@ Mesh triangle_mesh_from_soup(const std::string& source, std::vector<Point>& poin
                              std::vector<std::vector<std::size_t>>& polygons,
                              Read_report* report = nullptr, Corner_tables* corners = nullptr);
 
+// How a glTF file stores its vertices (gltf_bytes): in float32; quantized to integers
+// (KHR_mesh_quantization); or quantized, then compressed by meshoptimizer
+// (EXT_meshopt_compression). Other formats have one way each.
+enum class Gltf_encoding { float32, quantized, meshopt };
+
 // Writes by extension with full precision, all or nothing (write_atomically); throws
 // Io_error (unwritable output) and leaves no file behind when that fails. An OBJ file gets the
 // mesh's corner attributes too (obj_text): its texture coordinates and normals per corner, colours
 // per point, and `materials` (mtllib paths made relative to the file's folder, a usemtl line
 // wherever the material changes). A PLY file gets a vertex per wedge with its values (ply_bytes).
 // A glTF file (.gltf, .glb) is always written by gltf_bytes (gltf_io.h), with whatever the mesh
-// carries, an OBJ material's diffuse map embedded. Returns what the file was written without that
-// `materials` name, one line each (a texture file missing or unreadable); none is a failure.
+// carries, an OBJ material's diffuse map embedded, its vertices stored as `encoding` says. Returns
+// what the file was written without that `materials` name, one line each (a texture file missing
+// or unreadable); none is a failure.
 std::vector<std::string> write_mesh_atomically(const Mesh& mesh, const std::string& path,
-                                               const Material_references& materials = {});
+                                               const Material_references& materials = {},
+                                               Gltf_encoding encoding = Gltf_encoding::float32);
 
 // A level of a chain of levels of detail (write_lod_chain_atomically): its mesh, and the share of
 // the screen's area below which a viewer switches to the next coarser level (glTF's
@@ -91,11 +101,11 @@ std::vector<std::string> lod_level_paths(const std::string& path, std::size_t le
 
 // Writes a chain of levels of detail, finest first, into lod_level_paths(path, levels.size()),
 // all or none (write_all_atomically), each as write_mesh_atomically writes a mesh; a glTF file
-// holds every level (gltf_bytes: MSFT_lod). Returns what the files were written without, as
-// write_mesh_atomically does. At most kMaxFilesWrittenAtOnce levels.
-std::vector<std::string> write_lod_chain_atomically(const std::vector<Lod_level>& levels,
-                                                    const std::string& path,
-                                                    const Material_references& materials = {});
+// holds every level (gltf_bytes: MSFT_lod), stored as `encoding` says. Returns what the files were
+// written without, as write_mesh_atomically does. At most kMaxFilesWrittenAtOnce levels.
+std::vector<std::string> write_lod_chain_atomically(
+    const std::vector<Lod_level>& levels, const std::string& path,
+    const Material_references& materials = {}, Gltf_encoding encoding = Gltf_encoding::float32);
 
 }  // namespace io
 }  // namespace cgal_policies

@@ -1078,6 +1078,48 @@ TEST_F(Cli, SimplifyCarriesPlyColoursIntoAGltf) {
   }
 }
 
+// spot at 10% in each glTF encoding: each file reads back with the faces simplify reports and
+// texture coordinates at every corner; quantized is smaller than float and meshopt than
+// quantized, and the meshopt file reads back exactly as the quantized one.
+TEST_F(Cli, SimplifyWritesEachGltfEncoding) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const std::string spot = test_meshes::data_file("spot.obj");
+  std::map<std::string, std::uintmax_t> bytes;
+  std::map<std::string, std::vector<apps::Point>> points;
+  for (const std::string encoding : {"float", "quantized", "meshopt"}) {
+    SCOPED_TRACE(encoding);
+    const fs::path out = file(encoding + ".glb");
+    const Command_result r =
+        run("simplify",
+            spot + " " + out.string() + " 0.1 --policy gh --json --gltf-encoding " + encoding);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_LE(json_number(r.out, "target_gap_faces"), 0) << r.out;
+    EXPECT_EQ(double(uv_at_every_corner(out)), json_number(r.out, "output_faces")) << r.out;
+    const Mesh read =
+        apps::read_triangle_mesh(out.string(), nullptr, apps::Corner_attribute_reading::keep);
+    for (const auto v : read.vertices()) points[encoding].push_back(read.point(v));
+    bytes[encoding] = fs::file_size(out);
+  }
+  EXPECT_LT(bytes["quantized"], bytes["float"]);
+  EXPECT_LT(bytes["meshopt"], bytes["quantized"]);
+  EXPECT_EQ(points["meshopt"], points["quantized"]);
+  EXPECT_EQ(points["quantized"].size(), points["float"].size());
+}
+
+// --gltf-encoding is for a glTF OUT, and takes one of three names: anything else is one usage line
+// naming it, before IN is read, and no file.
+TEST_F(Cli, GltfEncodingIsRefusedUnlessOutIsGltf) {
+  const fs::path in = write("tet.off", kTetrahedronOff);
+  for (const char* out : {"out.obj", "out.ply"})
+    expect_failure(in.string() + " " + file(out).string() + " 1 --gltf-encoding quantized",
+                   apps::exit_usage, "--gltf-encoding", file(out));
+  expect_failure(
+      in.string() + " " + file("out.obj").string() + " --lod 0.5,0.25 --gltf-encoding meshopt",
+      apps::exit_usage, "--gltf-encoding", file("out_lod0.obj"));
+  expect_failure(in.string() + " " + file("out.glb").string() + " 1 --gltf-encoding draco",
+                 apps::exit_usage, "--gltf-encoding", file("out.glb"));
+}
+
 TEST_F(Cli, BadGltfIsOneBadInputLineAndNoOutput) {
   const fs::path out = file("out.glb");
   const auto one_triangle = [](std::vector<float> positions, std::vector<std::uint32_t> indices) {

@@ -956,6 +956,172 @@ std::string view_bytes(const tinygltf::Model& model, const tinygltf::Image& imag
                      data.begin() + std::ptrdiff_t(view.byteOffset + view.byteLength));
 }
 
+// The JSON of a .gltf file, or of a GLB's JSON chunk.
+nlohmann::json gltf_json(const fs::path& path) {
+  const std::string bytes = read_text(path);
+  if (path.extension() != ".glb") return nlohmann::json::parse(bytes);
+  std::uint32_t length = 0;
+  std::memcpy(&length, bytes.data() + 12, 4);
+  return nlohmann::json::parse(bytes.substr(20, length));
+}
+
+// painted_cube() with a normal leaning differently at every corner, and its texture coordinates
+// (u, v) mapped to (a u + b, c v), `uv_map` being {a, b, c}.
+Mesh leaning_cube(const std::array<double, 3>& uv_map) {
+  Mesh cube = painted_cube();
+  const Attributes a(cube);
+  for (const auto h : cube.halfedges()) {
+    if (cube.is_border(h)) continue;
+    const apps::Point& p = cube.point(cube.target(h));
+    const apps::Kernel::Vector_3 lean =
+        (*a.normals)[h] + apps::Kernel::Vector_3(p.x() / 9, p.y() / 7, p.z() / 5);
+    (*a.normals)[h] = lean / std::sqrt(lean.squared_length());
+    (*a.uvs)[h] = {uv_map[0] * (*a.uvs)[h][0] + uv_map[1], uv_map[2] * (*a.uvs)[h][1]};
+  }
+  return cube;
+}
+
+// Each vertex of `read` matched to the nearest of `source`'s: one each, every point within
+// `position_step` / 2 of its source, every face of `read` a face of `source` (each once), every
+// corner's texture coordinates, normal and colour within `uv_tolerance`, 1 / 127 (normalized i8,
+// renormalized on reading) and 1 / 510 (half a step of u8) of its source corner's, and the same
+// material.
+void expect_within_steps(const Mesh& source, const Mesh& read, double position_step,
+                         double uv_tolerance) {
+  ASSERT_EQ(read.number_of_vertices(), source.number_of_vertices());
+  ASSERT_EQ(read.number_of_faces(), source.number_of_faces());
+  const auto distance = [](const apps::Point& p, const apps::Point& q) {
+    return std::max({std::abs(p.x() - q.x()), std::abs(p.y() - q.y()), std::abs(p.z() - q.z())});
+  };
+  std::map<Mesh::Vertex_index, Mesh::Vertex_index> match;
+  std::set<Mesh::Vertex_index> matched;
+  double point_error = 0;
+  for (const auto v : read.vertices()) {
+    Mesh::Vertex_index nearest;
+    for (const auto w : source.vertices())
+      if (nearest == Mesh::null_vertex() ||
+          distance(read.point(v), source.point(w)) < distance(read.point(v), source.point(nearest)))
+        nearest = w;
+    match[v] = nearest;
+    matched.insert(nearest);
+    point_error = std::max(point_error, distance(read.point(v), source.point(nearest)));
+  }
+  EXPECT_EQ(matched.size(), source.number_of_vertices());
+  EXPECT_LE(point_error, position_step / 2 * (1 + 1e-9));
+  const Attributes a(source), b(read);
+  ASSERT_TRUE(a.uvs && b.uvs && a.normals && b.normals && a.colors && b.colors && a.materials &&
+              b.materials);
+  std::set<Mesh::Face_index> faces;
+  double uv_error = 0, normal_error = 0, color_error = 0;
+  for (const auto h : read.halfedges()) {
+    if (read.is_border(h)) continue;
+    const auto g = source.halfedge(match[read.source(h)], match[read.target(h)]);
+    ASSERT_TRUE(g != Mesh::null_halfedge() && !source.is_border(g));
+    faces.insert(source.face(g));
+    EXPECT_EQ((*b.materials)[read.face(h)], (*a.materials)[source.face(g)]);
+    for (int k : {0, 1}) uv_error = std::max(uv_error, std::abs((*b.uvs)[h][k] - (*a.uvs)[g][k]));
+    for (int k : {0, 1, 2})
+      normal_error = std::max(normal_error, std::abs((*b.normals)[h][k] - (*a.normals)[g][k]));
+    for (int k : {0, 1, 2, 3})
+      color_error = std::max(color_error, std::abs((*b.colors)[h][k] - (*a.colors)[g][k]));
+  }
+  EXPECT_EQ(faces.size(), source.number_of_faces());
+  EXPECT_LE(uv_error, uv_tolerance);
+  EXPECT_LE(normal_error, 1.0 / 127);
+  EXPECT_LE(color_error, 0.5 / 255 + 1e-12);
+}
+
+// The leaning cube written quantized and meshopt-compressed, as .gltf and .glb, read back within
+// a quantization step of every value (expect_within_steps): positions u16 on a grid of the cube's
+// side / 65535 under the node's translation and uniform scale, normals i8, colours u8. Its
+// texture coordinates, once glTF's v = 1 - v is taken, are normalized u16 when they lie in
+// [0, 1], normalized i16 in [-1, 1], and float (read back to float precision) when they run past
+// it, as the painted cube's do (u up to 6). The meshopt files read back exactly as the quantized
+// ones.
+TEST(Gltf, QuantizedAndMeshoptOutputsReadBackWithinAStep) {
+  const fs::path folder = scratch_folder("gltf_encodings");
+  const apps::Material_references names{{}, {"even", "odd"}, nullptr};
+  struct Uv_case {
+    std::string name;
+    std::array<double, 3> uv_map;
+    int component_type;
+    double tolerance;
+  };
+  for (const Uv_case& uv_case :
+       {Uv_case{"uvs in [0, 1]", {1.0 / 6, 0, 0.5}, kUnsignedShort, 0.5 / 65535 + 1e-12},
+        Uv_case{"uvs in [-1, 1]",
+                {1.0 / 6, -0.5, 0.5},
+                TINYGLTF_COMPONENT_TYPE_SHORT,
+                0.5 / 32767 + 1e-12},
+        Uv_case{"uvs past [-1, 1]", {1, 0, 1}, kFloat, 6.0 / (1 << 24)}}) {
+    const Mesh cube = leaning_cube(uv_case.uv_map);
+    const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(cube);
+    const double step =
+        std::max({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()}) /
+        65535;
+    for (const std::string name : {"cube.gltf", "cube.glb"}) {
+      std::map<apps::Gltf_encoding, std::vector<Face_corners>> read_back;
+      for (const apps::Gltf_encoding encoding :
+           {apps::Gltf_encoding::quantized, apps::Gltf_encoding::meshopt}) {
+        const bool meshopt = encoding == apps::Gltf_encoding::meshopt;
+        SCOPED_TRACE(name + (meshopt ? " meshopt, " : " quantized, ") + uv_case.name);
+        const fs::path out = folder / name;
+        apps::write_mesh_atomically(cube, out.string(), names, encoding);
+        apps::Read_report report;
+        const Mesh read =
+            apps::read_triangle_mesh(out.string(), &report, apps::Corner_attribute_reading::keep);
+        EXPECT_TRUE(report.repairs.empty());
+        EXPECT_EQ(report.materials.names, names.names);
+        expect_within_steps(cube, read, step, uv_case.tolerance);
+        read_back[encoding] = face_corners(read);
+
+        // tinygltf 2.7 cannot load a .gltf's fallback buffer (it has no uri): the JSON as it is.
+        const nlohmann::json gltf = gltf_json(out);
+        const std::vector<std::string> required =
+            meshopt ? std::vector<std::string>{"KHR_mesh_quantization", "EXT_meshopt_compression"}
+                    : std::vector<std::string>{"KHR_mesh_quantization"};
+        EXPECT_EQ(gltf["extensionsRequired"], required);
+        EXPECT_EQ(gltf["extensionsUsed"], required);
+        ASSERT_EQ(gltf["nodes"].size(), 1u);
+        EXPECT_EQ(gltf["nodes"][0]["translation"],
+                  (std::vector<double>{box.xmin(), box.ymin(), box.zmin()}));
+        EXPECT_EQ(gltf["nodes"][0]["scale"], std::vector<double>(3, step));
+        const nlohmann::json& primitives = gltf["meshes"][0]["primitives"];
+        ASSERT_EQ(primitives.size(), 2u);  // a primitive per material
+        // An accessor's component type, whether it is normalized, and its view's byteStride.
+        const auto layout = [&](int accessor) {
+          const nlohmann::json& a = gltf["accessors"][std::size_t(accessor)];
+          return std::make_tuple(
+              a["componentType"].get<int>(), a.value("normalized", false),
+              gltf["bufferViews"][a["bufferView"].get<std::size_t>()].value("byteStride", 0));
+        };
+        const nlohmann::json& attributes = primitives[0]["attributes"];
+        EXPECT_EQ(layout(attributes["POSITION"]), std::make_tuple(kUnsignedShort, false, 8));
+        EXPECT_EQ(layout(attributes["NORMAL"]),
+                  std::make_tuple(TINYGLTF_COMPONENT_TYPE_BYTE, true, 4));
+        EXPECT_EQ(layout(attributes["COLOR_0"]), std::make_tuple(kUnsignedByte, true, 4));
+        EXPECT_EQ(layout(attributes["TEXCOORD_0"]),
+                  std::make_tuple(uv_case.component_type, uv_case.component_type != kFloat,
+                                  uv_case.component_type == kFloat ? 0 : 4));
+        EXPECT_EQ(layout(primitives[0]["indices"]), std::make_tuple(kUnsignedShort, false, 0));
+        // Meshopt: the four attributes' views and the indices' compressed, their fallback buffer
+        // without data.
+        std::size_t compressed = 0;
+        for (const nlohmann::json& view : gltf["bufferViews"])
+          compressed += view.contains("extensions");
+        EXPECT_EQ(compressed, meshopt ? 5u : 0u);
+        EXPECT_EQ(gltf["buffers"].size(), meshopt ? 2u : 1u);
+        if (meshopt) {
+          EXPECT_FALSE(gltf["buffers"][1].contains("uri"));
+          EXPECT_EQ(gltf["buffers"][1]["extensions"]["EXT_meshopt_compression"]["fallback"], true);
+        }
+      }
+      EXPECT_EQ(read_back[apps::Gltf_encoding::meshopt], read_back[apps::Gltf_encoding::quantized]);
+    }
+  }
+  fs::remove_all(folder);
+}
+
 // bob as OBJ, written as GLB and as .gltf and read back: every corner as it was, to float
 // precision, its v turned on the way out and back. bob's material names bob_diffuse.png (map_Kd):
 // both files embed its bytes as they are, as the base colour texture of bob's one material, and

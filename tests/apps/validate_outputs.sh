@@ -2,8 +2,9 @@
 # The ctest test gltf_validator: simplify writes each shipped textured mesh (bob's map_Kd
 # embedded), the vertex-colour PLY and glTF files other tools made (gltfpack, gltf-pipeline's
 # Draco) as .glb and .gltf, bob with its texture missing, then bob with its texture as a data URI,
-# then bob as a chain of levels of detail (--lod, MSFT_lod), and the Khronos glTF-Validator
-# (validate_gltf.mjs) must find no error in any of them; its warnings are printed. Exits 77, which
+# then bob as a chain of levels of detail (--lod, MSFT_lod), then spot, the vertex-colour PLY and
+# bob's chain in the quantized and meshopt encodings (--gltf-encoding), and the Khronos
+# glTF-Validator (validate_gltf.mjs) must find no error in any of them; its warnings are printed. Exits 77, which
 # ctest counts as skipped, without node or the validator, and in CI's sanitized pass
 # (CGAL_POLICIES_SKIP_REAL_MESHES: the Release pass runs the real meshes).
 #
@@ -62,4 +63,19 @@ node -e 'const g = JSON.parse(require("fs").readFileSync(process.argv[1]));
     console.error(`${process.argv[1]}: MSFT_lod ids ${ids}, expected [1,2,3] and 4 coverages`);
     process.exit(1);
   }' "$work/bob_lod.gltf"
+# The quantized (KHR_mesh_quantization) and meshopt-compressed (EXT_meshopt_compression)
+# encodings: texture coordinates, colours, and a chain whose every level's node dequantizes its own
+# positions.
+for encoding in quantized meshopt; do
+  for extension in glb gltf; do
+    for input in data/spot.obj data/spot_colors.ply; do
+      name=$(basename "${input%.*}")_$encoding.$extension
+      "$simplify" "$source/$input" "$work/$name" 0.5 --quiet --gltf-encoding $encoding
+      outputs+=("$work/$name")
+    done
+    "$simplify" "$source/data/bob_tri.obj" "$work/bob_lod_$encoding.$extension" \
+      --lod 0.5,0.25,0.1,0.03 --quiet --gltf-encoding $encoding
+    outputs+=("$work/bob_lod_$encoding.$extension")
+  done
+done
 node "$(dirname "$0")/validate_gltf.mjs" --modules "$modules" "${outputs[@]}"
