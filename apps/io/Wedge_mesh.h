@@ -25,6 +25,13 @@ struct Wedge_mesh {
 // The wedges numbered in the order the faces first use them; a vertex on no face has none.
 Wedge_mesh wedge_mesh(const Mesh& mesh);
 
+// `wedges` in the order gltfpack draws them: the triangles grouped by material (in the order of
+// the material indices, none last), each group in the order meshoptimizer's vertex cache
+// optimization gives it, then the wedges renumbered in the order the triangles first use them
+// (its vertex fetch optimization). Neighbouring triangles and wedges then hold close values,
+// which the GPU's vertex cache and meshoptimizer's compression both favour.
+Wedge_mesh cache_ordered(const Wedge_mesh& wedges);
+
 }  // namespace io
 }  // namespace cgal_policies
 

@@ -930,7 +930,10 @@ std::string gltf_bytes(const std::vector<Lod_level>& levels, bool binary, Gltf_e
                        const Material_references& materials, const std::string& output_folder,
                        std::vector<std::string>& left_out) {
   std::vector<Wedge_mesh> wedges;
-  for (const Lod_level& level : levels) wedges.push_back(wedge_mesh(*level.mesh));
+  // The float bytes keep the mesh's order; the others, meant to be small, gltfpack's.
+  for (const Lod_level& level : levels)
+    wedges.push_back(encoding == Gltf_encoding::float32 ? wedge_mesh(*level.mesh)
+                                                        : cache_ordered(wedge_mesh(*level.mesh)));
   tinygltf::Model model;
   model.asset.version = "2.0";
   model.asset.generator = "cgal_policies";

@@ -49,7 +49,8 @@ Gltf_soup read_gltf(const std::string& path, bool binary);
 // `encoding` says how the vertices are stored:
 // - float32: float positions, normals, texture coordinates and RGBA colours (glTF has no
 //   doubles), u32 indices.
-// - quantized (KHR_mesh_quantization, required): positions as u16 steps of 1/65535 of the level's
+// - quantized (KHR_mesh_quantization, required): the triangles and wedges in cache_ordered's order
+//   (Wedge_mesh.h), as gltfpack writes them; positions as u16 steps of 1/65535 of the level's
 //   largest bounding-box side, the level's node translated to the box's lowest corner and scaled
 //   by the step; unit normals as normalized i8; texture coordinates as normalized u16 when every
 //   one lies in [0, 1], normalized i16 when every one lies in [-1, 1], float otherwise; colours as
