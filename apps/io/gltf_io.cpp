@@ -640,6 +640,7 @@ void pass_looks_through(tinygltf::Model& model, const tinygltf::Model& looks,
   }
 }
 
+// glTF's component type of an integer type.
 template <class Integer>
 constexpr int component_type_of() {
   if constexpr (std::is_same_v<Integer, std::int8_t>) return kByte;
@@ -677,6 +678,18 @@ Integer normalized_integer(double value, double none) {
   return Integer(std::lround(v * largest));
 }
 
+// The bounds of an accessor of positions, which the spec requires: those of the values it stores,
+// x, y, z after one another.
+template <class Value>
+void set_bounds(tinygltf::Accessor& accessor, const std::vector<Value>& values) {
+  accessor.minValues.assign(3, std::numeric_limits<double>::infinity());
+  accessor.maxValues.assign(3, -std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    accessor.minValues[i % 3] = std::min(accessor.minValues[i % 3], double(values[i]));
+    accessor.maxValues[i % 3] = std::max(accessor.maxValues[i % 3], double(values[i]));
+  }
+}
+
 // KHR_mesh_quantization's positions: unsigned 16-bit steps from `origin` along each axis, the
 // step the same on every axis, so that the node's scale, which dequantizes them, is uniform and
 // leaves the normals' directions as they are.
@@ -709,13 +722,7 @@ int append_quantized_positions(tinygltf::Model& model, const std::vector<Point>&
       steps.push_back(std::uint16_t(
           std::min(65535.0, std::round((p[axis] - grid.origin[std::size_t(axis)]) / grid.step))));
   const int position = append_integer_attribute(model, steps, TINYGLTF_TYPE_VEC3, false);
-  tinygltf::Accessor& bounds = model.accessors[std::size_t(position)];
-  bounds.minValues.assign(3, 65535);
-  bounds.maxValues.assign(3, 0);
-  for (std::size_t i = 0; i < steps.size(); ++i) {
-    bounds.minValues[i % 3] = std::min(bounds.minValues[i % 3], double(steps[i]));
-    bounds.maxValues[i % 3] = std::max(bounds.maxValues[i % 3], double(steps[i]));
-  }
+  set_bounds(model.accessors[std::size_t(position)], steps);
   return position;
 }
 
@@ -724,14 +731,7 @@ int append_float_positions(tinygltf::Model& model, const std::vector<Point>& poi
   for (const Point& p : points)
     for (double c : {p.x(), p.y(), p.z()}) positions.push_back(float(c));
   const int position = append_float_attribute(model, positions, TINYGLTF_TYPE_VEC3);
-  // The spec requires the bounds of the positions, which are these floats'.
-  tinygltf::Accessor& bounds = model.accessors[std::size_t(position)];
-  bounds.minValues.assign(3, std::numeric_limits<double>::infinity());
-  bounds.maxValues.assign(3, -std::numeric_limits<double>::infinity());
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    bounds.minValues[i % 3] = std::min(bounds.minValues[i % 3], double(positions[i]));
-    bounds.maxValues[i % 3] = std::max(bounds.maxValues[i % 3], double(positions[i]));
-  }
+  set_bounds(model.accessors[std::size_t(position)], positions);
   return position;
 }
 

@@ -981,6 +981,27 @@ Mesh leaning_cube(const std::array<double, 3>& uv_map) {
   return cube;
 }
 
+// Each vertex of `read` matched to the nearest vertex of `source` (their largest coordinate
+// difference), and the largest such distance.
+std::pair<std::map<Mesh::Vertex_index, Mesh::Vertex_index>, double> nearest_vertices(
+    const Mesh& read, const Mesh& source) {
+  const auto distance = [](const apps::Point& p, const apps::Point& q) {
+    return std::max({std::abs(p.x() - q.x()), std::abs(p.y() - q.y()), std::abs(p.z() - q.z())});
+  };
+  std::map<Mesh::Vertex_index, Mesh::Vertex_index> match;
+  double largest = 0;
+  for (const auto v : read.vertices()) {
+    Mesh::Vertex_index nearest;
+    for (const auto w : source.vertices())
+      if (nearest == Mesh::null_vertex() ||
+          distance(read.point(v), source.point(w)) < distance(read.point(v), source.point(nearest)))
+        nearest = w;
+    match[v] = nearest;
+    largest = std::max(largest, distance(read.point(v), source.point(nearest)));
+  }
+  return {match, largest};
+}
+
 // Each vertex of `read` matched to the nearest of `source`'s: one each, every point within
 // `position_step` / 2 of its source, every face of `read` a face of `source` (each once), every
 // corner's texture coordinates, normal and colour within `uv_tolerance`, 1 / 127 (normalized i8,
@@ -990,22 +1011,9 @@ void expect_within_steps(const Mesh& source, const Mesh& read, double position_s
                          double uv_tolerance) {
   ASSERT_EQ(read.number_of_vertices(), source.number_of_vertices());
   ASSERT_EQ(read.number_of_faces(), source.number_of_faces());
-  const auto distance = [](const apps::Point& p, const apps::Point& q) {
-    return std::max({std::abs(p.x() - q.x()), std::abs(p.y() - q.y()), std::abs(p.z() - q.z())});
-  };
-  std::map<Mesh::Vertex_index, Mesh::Vertex_index> match;
+  auto [match, point_error] = nearest_vertices(read, source);
   std::set<Mesh::Vertex_index> matched;
-  double point_error = 0;
-  for (const auto v : read.vertices()) {
-    Mesh::Vertex_index nearest;
-    for (const auto w : source.vertices())
-      if (nearest == Mesh::null_vertex() ||
-          distance(read.point(v), source.point(w)) < distance(read.point(v), source.point(nearest)))
-        nearest = w;
-    match[v] = nearest;
-    matched.insert(nearest);
-    point_error = std::max(point_error, distance(read.point(v), source.point(nearest)));
-  }
+  for (const auto& pair : match) matched.insert(pair.second);
   EXPECT_EQ(matched.size(), source.number_of_vertices());
   EXPECT_LE(point_error, position_step / 2 * (1 + 1e-9));
   const Attributes a(source), b(read);
@@ -1558,22 +1566,9 @@ TEST(Gltf, DracoCompressedPrimitivesReadAsTheirSource) {
         uv_lowest = std::min(uv_lowest, c), uv_highest = std::max(uv_highest, c);
   const double uv_tolerance = half_step(uv_lowest, uv_highest, 12);
 
-  const auto distance = [](const apps::Point& p, const apps::Point& q) {
-    return std::max({std::abs(p.x() - q.x()), std::abs(p.y() - q.y()), std::abs(p.z() - q.z())});
-  };
-  std::map<Mesh::Vertex_index, Mesh::Vertex_index> match;
+  auto [match, point_error] = nearest_vertices(draco, source);
   std::set<Mesh::Vertex_index> matched;
-  double point_error = 0;
-  for (const auto v : draco.vertices()) {
-    Mesh::Vertex_index nearest;
-    for (const auto w : source.vertices())
-      if (nearest == Mesh::null_vertex() || distance(draco.point(v), source.point(w)) <
-                                                distance(draco.point(v), source.point(nearest)))
-        nearest = w;
-    match[v] = nearest;
-    matched.insert(nearest);
-    point_error = std::max(point_error, distance(draco.point(v), source.point(nearest)));
-  }
+  for (const auto& pair : match) matched.insert(pair.second);
   EXPECT_EQ(matched.size(), source.number_of_vertices());  // one decoded vertex each
   EXPECT_LE(point_error, position_tolerance);
 
