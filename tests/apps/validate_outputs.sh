@@ -4,9 +4,9 @@
 # Draco) as .glb and .gltf, bob with its texture missing, then bob with its texture as a data URI,
 # then bob as a chain of levels of detail (--lod, MSFT_lod), then spot, the vertex-colour PLY and
 # bob's chain in the quantized and meshopt encodings (--gltf-encoding), and the Khronos
-# glTF-Validator (validate_gltf.mjs) must find no error in any of them; its warnings are printed. Exits 77, which
-# ctest counts as skipped, without node or the validator, and in CI's sanitized pass
-# (CGAL_POLICIES_SKIP_REAL_MESHES: the Release pass runs the real meshes).
+# glTF-Validator (validate_gltf.mjs) must find no error in any of them; its warnings are printed.
+# Exits 77, which ctest counts as skipped, without node or the validator, and in CI's sanitized
+# pass (CGAL_POLICIES_SKIP_REAL_MESHES: the Release pass runs the real meshes).
 #
 #   validate_outputs.sh SIMPLIFY SOURCE_DIR NODE_MODULES WORK_DIR
 set -euo pipefail
