@@ -7,6 +7,7 @@
 #include "gltf_meshopt.h"
 #include "obj_material_looks.h"
 
+#include <CGAL/Bbox_3.h>
 #include <tiny_gltf.h>
 #include <nlohmann/json.hpp>
 
@@ -699,18 +700,11 @@ struct Position_grid {
 };
 
 Position_grid position_grid(const std::vector<Point>& points) {
-  std::array<double, 3> lowest, highest;
-  lowest.fill(std::numeric_limits<double>::infinity());
-  highest.fill(-std::numeric_limits<double>::infinity());
-  for (const Point& p : points)
-    for (int axis = 0; axis < 3; ++axis) {
-      lowest[std::size_t(axis)] = std::min(lowest[std::size_t(axis)], p[axis]);
-      highest[std::size_t(axis)] = std::max(highest[std::size_t(axis)], p[axis]);
-    }
-  double extent = 0;
-  for (std::size_t axis = 0; axis < 3; ++axis)
-    extent = std::max(extent, highest[axis] - lowest[axis]);
-  return {lowest, extent > 0 ? extent / 65535 : 1};
+  CGAL::Bbox_3 box;  // empty, as for a level without points
+  for (const Point& p : points) box += p.bbox();
+  const double extent =
+      std::max({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
+  return {{box.xmin(), box.ymin(), box.zmin()}, extent > 0 ? extent / 65535 : 1};
 }
 
 // The positions on `grid`, their bounds (which the spec requires) those of the integers.
