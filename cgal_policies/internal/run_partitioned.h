@@ -66,15 +66,19 @@ void collapse_zero_length_edges(CGAL::Surface_mesh<Point>& mesh) {
 
 // Simplifies a part of a whole of `whole_faces` faces simplified to `target`, run_policy(part,
 // target) running the policy, and collects its garbage. Each part keeps kPartShare times its share
-// of the target: the last collapses, which set where the detail goes, are left to the run over the
-// whole, ordered across the cuts. False when the part lost a locked vertex.
+// of the target besides one face per locked vertex, which it cannot collapse: the last collapses,
+// which set where the detail goes, are left to the run over the whole, ordered across the cuts,
+// and the cut does not take the faces of the part's inside. False when the part lost a locked
+// vertex.
 template <class Point, class RunPolicy>
 bool simplify_part(CGAL::Surface_mesh<Point>& part, std::size_t target, std::size_t whole_faces,
                    const RunPolicy& run_policy) {
   if (part.is_empty()) return true;
   const double share = std::min(1.0, kPartShare * double(target) / double(whole_faces));
   const std::size_t locked = locked_vertex_count(part);
-  run_policy(part, std::size_t(std::llround(share * double(part.number_of_faces()))));
+  run_policy(part, std::min<std::size_t>(
+                       part.number_of_faces(),
+                       std::size_t(std::llround(share * double(part.number_of_faces()))) + locked));
   part.collect_garbage();
   return locked_vertex_count(part) == locked;
 }

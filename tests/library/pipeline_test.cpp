@@ -703,6 +703,30 @@ TEST(MeshParts, StitchingTheCutPartsGivesTheMeshBack) {
   EXPECT_TRUE(corner_values(whole) == corner_values(sphere));
 }
 
+// A part is asked for twice its share of the target besides its locked vertices: the cut, which
+// the part cannot simplify, must not take the faces its inside needs (the bunny at 1% in four
+// parts had ten times the mean error of the whole run when it did).
+TEST(PartitionedRun, AsksEachPartForItsShareBesideItsLockedVertices) {
+  namespace internal = cgal_policies::internal;
+  Mesh part = test_meshes::loop_sphere(2);
+  ASSERT_EQ(part.number_of_faces(), 320u);
+  auto lock =
+      part.add_property_map<Mesh::Vertex_index, bool>(internal::kLockedVertexMap, false).first;
+  std::size_t locked = 0;
+  for (const Mesh::Vertex_index v : part.vertices()) lock[v] = locked++ < 10;
+  std::size_t asked = 0;
+  const auto record = [&asked](Mesh&, std::size_t target) {
+    asked = target;
+    return internal::Policy_outcome();
+  };
+  // 2 × 8 / 640 of the part's 320 faces, and its 10 locked vertices.
+  EXPECT_TRUE(internal::simplify_part(part, 8, 640, record));
+  EXPECT_EQ(asked, 18u);
+  // Never more than the part has.
+  EXPECT_TRUE(internal::simplify_part(part, 320, 640, record));
+  EXPECT_EQ(asked, 320u);
+}
+
 // Two vertices on the cut moved onto one point: CGAL collapses the edge between them without
 // asking any filter, so a part would lose one of them and the run would fall back to the whole.
 // The run collapses such edges in the whole first, and stays cut.
