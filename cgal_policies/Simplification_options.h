@@ -23,6 +23,10 @@
 //                         (default 0, off)
 //   drop_small_pieces     when no collapse is left short of the target, drop whole components,
 //                         smallest first, never the largest, until it is met (default false)
+//   prepass_factor        >= 1: before the policy, fast takes the mesh (each part of a partitioned
+//                         run) down to this many times the policy's target, when it has more, so
+//                         that the policy works on a much smaller mesh (docs/pipeline.md); 0: off
+//                         (default). Not with a bound, a time limit or on_collapse
 //   smoothing             Smoothing_options (default: none)
 //   fit                   then fit the output to the input both ways (Two_sided_fitter), within the
 //                         run's bound when it has one (default below)
@@ -60,6 +64,8 @@
 
 #include <CGAL/Surface_mesh/Surface_mesh.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <functional>
 
@@ -81,6 +87,7 @@ struct Simplification_options {
   double merge_distance = 0;
   std::size_t min_component = 0;
   bool drop_small_pieces = false;
+  double prepass_factor = 0;
   Smoothing_options smoothing;
   bool fit = true;
   Two_sided_fit_options fit_options;
@@ -101,6 +108,13 @@ struct Simplification_options {
     std::size_t cells = 1;
     while (2 * cells <= wanted) cells *= 2;
     return cells;
+  }
+
+  // The faces the fast prepass leaves for a policy run to `policy_target` faces; 0 without a
+  // prepass (fast itself has none).
+  std::size_t prepass_faces(std::size_t policy_target) const {
+    if (prepass_factor == 0 || policy == Simplification_policy::fast) return 0;
+    return std::size_t(std::ceil(prepass_factor * double(std::max<std::size_t>(policy_target, 1))));
   }
 
   // The two-sided bound the run keeps, a fraction of the input's diagonal: max_error, else the

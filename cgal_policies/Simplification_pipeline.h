@@ -3,7 +3,8 @@
 //   1. merge           Border_pair_contraction stitches border pairs closer than merge_distance
 //   2. components      components of fewer than min_component faces go, but the largest
 //   3. simplification  the policy down to the target, carrying the corner attributes
-//                      (Corner_attributes.h) with their seams, within max_error and the time limit
+//                      (Corner_attributes.h) with their seams, within max_error and the time limit;
+//                      with prepass_factor, fast first takes the mesh most of the way
 //   4. pieces          when no collapse is left short of the target, whole components go
 //   5. smoothing       Laplacian_smoother, within the run's bound when asked
 //   6. fit             Two_sided_fitter against the input, within the run's bound; on a
@@ -70,6 +71,10 @@ class Simplification_pipeline {
     CGAL_precondition(options.merge_distance >= 0);
     CGAL_precondition(options.smoothing.iterations >= 0);
     CGAL_precondition(!options.smoothing.bounded || options.two_sided_bound() > 0);
+    CGAL_precondition(options.prepass_factor == 0 || options.prepass_factor >= 1);
+    CGAL_precondition(options.prepass_factor == 0 ||
+                      (options.two_sided_bound() == 0 && options.time_limit_seconds == 0 &&
+                       !options.on_collapse));
   }
 
   // Runs every pass on `mesh`. The passes that measure against the input (fit, bounded smoothing)
@@ -505,9 +510,31 @@ class Simplification_pipeline {
   }
 
   // `reference`: the input a bound is certified against, when it is not `mesh` as it is now.
+  // With a prepass, fast first takes `mesh` down to options.prepass_faces(target) faces; the
+  // progress of both is then measured from where `mesh` started.
   static internal::Policy_outcome run_policy(Mesh& mesh, std::size_t target,
                                              const Simplification_options& options,
                                              const Mesh* reference) {
+    const std::size_t coarse = options.prepass_faces(target);
+    if (coarse == 0 || mesh.number_of_faces() <= coarse)
+      return run_policy_alone(mesh, target, options, reference);
+    Simplification_options from_start = options;
+    if (options.progress)
+      from_start.progress = [&options, start = mesh.number_of_faces(), target](
+                                Simplification_pass pass, double done, std::size_t faces) {
+        if (pass == Simplification_pass::simplification)
+          done = internal::simplification_done(start, target, faces);
+        options.progress(pass, done, faces);
+      };
+    internal::run_fast<Point>(mesh, coarse, from_start, nullptr);
+    if (options.interrupted && options.interrupted())
+      return internal::flat_array_outcome(mesh, false, true);
+    return run_policy_alone(mesh, target, from_start, reference);
+  }
+
+  static internal::Policy_outcome run_policy_alone(Mesh& mesh, std::size_t target,
+                                                   const Simplification_options& options,
+                                                   const Mesh* reference) {
     switch (options.policy) {
       case Simplification_policy::gh:
         return internal::run_gh(mesh, target, options, reference);

@@ -36,6 +36,7 @@ Bench_row pipeline_row(const Policy_entry& policy, bool fit) {
     if (cgal_policies::runs_edge_collapse(policy.policy))
       options.time_limit_seconds = settings.time_limit_seconds;
     apply_policy_options(policy, settings.options, options);
+    if (options.two_sided_bound() == 0) options.prepass_factor = settings.prepass_factor;
     return options;
   };
   row.run = [options_of](Mesh& mesh, const Bench_settings& settings) {

@@ -23,6 +23,7 @@ struct Bench_settings {
   double time_limit_seconds = 0;  // the edge-collapse runs stop where they are after it; 0: none
   Option_values options;          // the option values given on the command line, by name
   std::size_t threads = 0;        // cores of a pipeline row's cells, 0: all (the peers use one)
+  double prepass_factor = 0;      // Simplification_options::prepass_factor of the rows that can
 };
 
 // What one run did.

@@ -196,7 +196,7 @@ std::vector<Run_record> run_bench(const Bench_plan& plan) {
         if (!mesh_runs_row(bench_mesh, row.name)) continue;
         for (const std::size_t threads : thread_counts(row, plan)) {
           const Bench_settings settings{target_faces, plan.time_limit_seconds, plan.options,
-                                        threads};
+                                        threads, plan.prepass_factor};
           Run_record r = run_row(input, row, plan, settings, progress, case_name);
           r.mesh = name;
           r.target = describe_target(target);

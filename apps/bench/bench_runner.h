@@ -31,6 +31,9 @@ struct Bench_plan {
   std::size_t samples = kDefaultErrorSamples;
   // A run still going after this many seconds stops where it is (0: no limit); see run_row.
   double time_limit_seconds = 0;
+  // Fast first, down to this many times the target, in every pipeline row without a bound (0:
+  // none; not with a time limit).
+  double prepass_factor = 0;
   // Read the meshes' corner attributes (OBJ), carry them, and measure them (Run_record).
   bool attributes = false;
   // Called after each mesh with every record so far, to keep partial results of long runs.

@@ -10,6 +10,7 @@
 #include "cli/Command_line.h"
 #include "cli/Json_object.h"
 #include "cli/app_main.h"
+#include "cli/pass_options.h"
 #include "cli/policy_command_line.h"
 #include "io/atomic_write.h"
 #include "pipeline/policy_registry.h"
@@ -83,6 +84,10 @@ void print_help() {
          "  --out-of-core        read each --mesh (binary PLY) in passes, never whole, as\n"
          "                       simplify --out-of-core does; this suite's policies only\n"
          "                       (not hausdorff), and the error is not measured\n"
+         "  --prepass K          fast first takes the mesh down to K times the target in\n"
+         "                       every row of this suite without a bound (not fast,\n"
+         "                       hausdorff), then the row's policy (simplify --prepass);\n"
+         "                       not with a time limit\n"
          "  --repetitions N      runs per case; the fastest counts (default: the preset's, "
          "else 3)\n"
          "  --samples N          face samples per direction of the error measure\n"
@@ -250,6 +255,7 @@ int run(int argc, char** argv) {
   const std::optional<double> time_limit = cli.take_number("time-limit");
   if (time_limit && !(*time_limit >= 0 && *time_limit <= kMaxTimeLimitSeconds))
     throw App_error(exit_usage, "--time-limit must be a number of seconds in [0, 1e9]");
+  const double prepass_factor = take_prepass_factor(cli);
   const std::optional<std::string> out = cli.take_value("out");
   const bool fit_all = cli.take_flag("fit");
   const bool attributes = cli.take_flag("attributes");
@@ -291,6 +297,9 @@ int run(int argc, char** argv) {
     plan.time_limit_seconds = time_limit.value_or(0.0);
     if (threads) plan.threads = parse_thread_counts(*threads);
   }
+  plan.prepass_factor = prepass_factor;
+  if (plan.prepass_factor > 0 && plan.time_limit_seconds > 0)
+    throw App_error(exit_usage, "--prepass runs fast, which keeps no time limit: not with one");
   // The "P+fit" rows: beside every policy of this suite with --fit, beside the preset's choice
   // without.
   std::vector<std::string> fitted;

@@ -28,6 +28,13 @@ cgal_policies::Smoothing_options take_smoothing_options(Command_line& cli) {
   return smoothing;
 }
 
+double take_prepass_factor(Command_line& cli) {
+  const double factor = cli.take_number("prepass").value_or(0.0);
+  if (!(factor == 0 || (factor >= 1 && factor <= kMaxCount)))
+    throw App_error(exit_usage, "--prepass must be 0 (off) or a factor of at least 1");
+  return factor;
+}
+
 std::string smoothing_help() {
   return "  --smooth N            N passes of Laplacian smoothing after simplifying, 0..10000\n"
          "                        (default 0)\n"

@@ -18,6 +18,10 @@ cgal_policies::Smoothing_options take_smoothing_options(Command_line& cli);
 // The lines of the help text that describe those options.
 std::string smoothing_help();
 
+// Takes --prepass K (Simplification_options::prepass_factor): 0 when absent; App_error(exit_usage)
+// unless K is 0 or at least 1.
+double take_prepass_factor(Command_line& cli);
+
 // Takes --fit and --fit-rounds N into `options`. A command line that names a policy runs it alone
 // unless --fit is given; one that names none keeps the library's default pipeline, fit included.
 // App_error(exit_usage) when malformed.

@@ -63,6 +63,7 @@ void add_fields(Json_object& report, const cgal_policies::Simplification_report&
   report.add("vanished_components", run.dropped_after.components);
   report.add("vanished_faces", run.dropped_after.faces);
   report.add("max_error", options.max_error);
+  report.add("prepass", options.prepass_factor);
   report.add("parts", run.parts);
   report.add("threads", options.threads);
   report.add("smooth_iterations", options.smoothing.iterations);

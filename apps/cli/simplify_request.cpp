@@ -35,6 +35,7 @@ Pipeline_request take_pipeline_request(Command_line& cli) {
   request.ratio = cli.take_number("ratio");
   request.faces = cli.take_whole_number("faces", 1, kMaxCount);
   const std::optional<double> max_error = cli.take_number("max-error");
+  options.prepass_factor = take_prepass_factor(cli);
   options.merge_distance = cli.take_number("merge-distance").value_or(0.0);
   if (!(options.merge_distance >= 0))
     throw App_error(exit_usage, "--merge-distance must be at least 0");
@@ -58,6 +59,13 @@ Pipeline_request take_pipeline_request(Command_line& cli) {
   options.max_error = max_error.value_or(0.0);
   if (options.smoothing.bounded && !(options.two_sided_bound() > 0))
     throw App_error(exit_usage, "--smooth-bounded needs --max-error (or a policy's --tolerance)");
+  if (options.prepass_factor > 0 && options.policy == cgal_policies::Simplification_policy::fast)
+    throw App_error(exit_usage, "--prepass runs fast before another policy, not before fast");
+  if (options.prepass_factor > 0 &&
+      (options.two_sided_bound() > 0 || options.time_limit_seconds > 0))
+    throw App_error(exit_usage,
+                    "--prepass runs fast, which keeps no bound and no time limit: not with "
+                    "--max-error, the hausdorff policy or --time-limit");
   return request;
 }
 

@@ -404,6 +404,26 @@ TEST_F(Cli, FitIsReportedAndTwoRunsWriteTheSameBytes) {
                  out);
 }
 
+// --prepass K: reported, and refused where fast cannot keep what the run asks (a bound, a time
+// limit) or would run twice.
+TEST_F(Cli, PrepassIsReportedAndRefusedWhereFastCannotRun) {
+  const fs::path sphere = file("sphere.off");
+  test_meshes::Mesh input = test_meshes::loop_sphere(3);
+  ASSERT_TRUE(
+      CGAL::IO::write_polygon_mesh(sphere.string(), input, CGAL::parameters::stream_precision(17)));
+  const fs::path out = file("sphere_out.ply");
+  const Command_result r = run("simplify", sphere.string() + " " + out.string() +
+                                               " --faces 64 --policy flat-lt --prepass 4 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* field : {"\"prepass\": 4,", "\"output_faces\": 64,"})
+    EXPECT_NE(r.out.find(field), std::string::npos) << field << " missing in " << r.out;
+  const std::string in = sphere.string() + " " + file("refused.ply").string() + " 0.1 ";
+  for (const std::string& args :
+       {in + "--prepass 0.5", in + "--prepass 4 --policy fast", in + "--prepass 4 --max-error 0.01",
+        in + "--prepass 4 --policy hausdorff", in + "--prepass 4 --policy classic --time-limit 5"})
+    expect_failure(args, apps::exit_usage, "--prepass", file("refused.ply"));
+}
+
 TEST_F(Cli, TheFastPolicyRefusesMaxError) {
   const fs::path in = write("tet.off", kTetrahedronOff), out = file("out.off");
   const Command_result r =

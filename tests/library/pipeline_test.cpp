@@ -14,6 +14,7 @@
 
 #include <cgal_policies/Corner_attribute_carrier.h>
 #include <cgal_policies/Face_count_stop_predicate.h>
+#include <cgal_policies/Fast_threshold_simplifier.h>
 #include <cgal_policies/internal/Mesh_parts.h>
 #include <cgal_policies/internal/raw_mesh_file.h>
 #include <cgal_policies/internal/run_partitioned.h>
@@ -822,6 +823,90 @@ TEST_P(PartitionedRun, KeepsTheInvariantsAndGivesTheSameBytesOnAnyThreadCount) {
 INSTANTIATE_TEST_SUITE_P(Policies, PartitionedRun,
                          testing::Values("lt", "classic", "fast", "flat-lt"),
                          [](const auto& test) { return identifier(test.param); });
+
+// The fast prepass (Simplification_options::prepass_factor): the run is fast down to K times the
+// target, then the policy from there, and its progress rises from the input's face count.
+TEST(Prepass, RunsFastDownToItsFactorThenThePolicy) {
+  const Mesh sphere = loop_sphere(4);  // 5,120 faces
+  cgal_policies::Simplification_options options = policy_alone("lt", 100);
+  options.prepass_factor = 5;
+  std::vector<std::pair<double, std::size_t>> reports;
+  options.progress = [&](cgal_policies::Simplification_pass, double done, std::size_t faces) {
+    reports.emplace_back(done, faces);
+  };
+  Mesh mesh = sphere;
+  const cgal_policies::Simplification_report report = apps::Pipeline(options).run(mesh);
+  EXPECT_EQ(report.output_faces, 100u);
+  EXPECT_EQ(report.stop_reason, cgal_policies::Stop_reason::target_reached);
+
+  Mesh by_hand = sphere;
+  cgal_policies::Fast_threshold_simplifier()(by_hand, 500);
+  EXPECT_LE(by_hand.number_of_faces(), 500u);
+  apps::Pipeline(policy_alone("lt", 100)).run(by_hand);
+  EXPECT_TRUE(written_bytes(mesh, "prepass") == written_bytes(by_hand, "by_hand"));
+
+  ASSERT_FALSE(reports.empty());
+  EXPECT_LT(reports.front().second, 5120u);  // after fast's first pass
+  for (std::size_t i = 0; i < reports.size(); ++i) {
+    const auto [done, faces] = reports[i];
+    EXPECT_DOUBLE_EQ(done, std::min(1.0, double(5120 - faces) / (5120 - 100)));
+    if (i > 0) {
+      EXPECT_LE(faces, reports[i - 1].second);
+    }
+  }
+}
+
+// A mesh that has no more faces than the prepass would leave goes to the policy as it is; an
+// interruption polled after the prepass leaves its mesh, with no policy and no fit after it.
+TEST(Prepass, StepsAsideOnASmallMeshAndStopsWhenInterrupted) {
+  const Mesh sphere = loop_sphere(4);
+  cgal_policies::Simplification_options options = policy_alone("flat-lt", 100);
+  Mesh without = sphere;
+  apps::Pipeline(options).run(without);
+  options.prepass_factor = 60;  // 6,000 faces: more than the sphere has
+  Mesh with = sphere;
+  apps::Pipeline(options).run(with);
+  EXPECT_TRUE(written_bytes(with, "large_factor") == written_bytes(without, "no_prepass"));
+
+  options.prepass_factor = 5;
+  options.fit = true;
+  options.interrupted = [] { return true; };
+  Mesh interrupted = sphere;
+  const cgal_policies::Simplification_report report = apps::Pipeline(options).run(interrupted);
+  Mesh fast_alone = sphere;
+  cgal_policies::Fast_threshold_simplifier()(fast_alone, 500);
+  EXPECT_EQ(report.stop_reason, cgal_policies::Stop_reason::interrupted);
+  EXPECT_EQ(report.output_faces, fast_alone.number_of_faces());
+  EXPECT_FALSE(report.fitted);
+  EXPECT_TRUE(apps::check_mesh_validity(interrupted).valid);
+}
+
+// The prepass in each cell of a partitioned run: the invariants of a partitioned run, the same
+// bytes on one thread and on two, and the mean error of the same run whole within 3%.
+TEST(Prepass, KeepsWhatAPartitionedRunKeeps) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const Mesh input = apps::read_triangle_mesh(data_file("bunny.obj"));
+  const apps::Mesh_validity before = apps::check_mesh_validity(input);
+  const std::size_t target = input.number_of_faces() / 100;
+  cgal_policies::Simplification_options options = policy_alone("flat-lt", target);
+  options.prepass_factor = 10;
+  Mesh whole = input;
+  apps::Pipeline(options).run(whole);
+  options.parts = 4;
+  std::string bytes[2];
+  for (const std::size_t threads : {1, 2}) {
+    options.threads = threads;
+    Mesh mesh = input;
+    const cgal_policies::Simplification_report report = apps::Pipeline(options).run(mesh);
+    EXPECT_EQ(report.parts, 4u);
+    EXPECT_EQ(report.stop_reason, cgal_policies::Stop_reason::target_reached);
+    expect_kept_as_a_partitioned_run_keeps(mesh, target, before);
+    EXPECT_LT(mean_error(input, mesh), 1.03 * mean_error(input, whole));
+    bytes[threads - 1] = written_bytes(mesh, "prepass" + std::to_string(threads));
+  }
+  EXPECT_FALSE(bytes[0].empty());
+  EXPECT_TRUE(bytes[0] == bytes[1]) << "one thread and two wrote different files";
+}
 
 // The fit by cells pins the vertices on the cuts for half its rounds: its mean error stays within
 // 10% of the whole fit's on the bunny cut in four (measured 6%, docs/scale.md), and below the
