@@ -1,9 +1,11 @@
 // The input surface of the Hausdorff-bounded policies (docs/hausdorff.md): its triangles, their
-// neighbours across edges and an AABB tree, for distance queries and the flatness argument.
+// neighbours across edges and a bounding-volume hierarchy, for distance queries and the flatness
+// argument.
 #ifndef CGAL_POLICIES_INTERNAL_HAUSDORFF_INPUT_SURFACE_H
 #define CGAL_POLICIES_INTERNAL_HAUSDORFF_INPUT_SURFACE_H
 
 #include <cgal_policies/internal/Flat_frame.h>
+#include <cgal_policies/internal/Triangle_bvh.h>
 #include <cgal_policies/internal/mesh_geometry.h>
 #include <cgal_policies/internal/patch_distance.h>
 #include <cgal_policies/internal/triangle_distance.h>
@@ -48,6 +50,8 @@ Triangle_corners face_corners(typename boost::graph_traits<Mesh>::face_descripto
 
 class Hausdorff_input_surface {
  public:
+  // CGAL's AABB tree, for the searches of other meshes (Fit_output_tree, resolve_free_uvs,
+  // Hausdorff_attachment); the input's own search is m_bvh.
   using Search_kernel = CGAL::Simple_cartesian<double>;
   using Search_triangles = std::vector<Search_kernel::Triangle_3>;
   using Search_tree = CGAL::AABB_tree<CGAL::AABB_traits<
@@ -69,9 +73,7 @@ class Hausdorff_input_surface {
     using Input_face = typename boost::graph_traits<InputMesh>::face_descriptor;
     std::vector<std::pair<Input_face, std::uint32_t>> index;
     for (auto f : faces(input)) {
-      const Triangle_corners t = face_corners(f, input, vpm);
-      m_input.emplace_back(search_point(t[0]), search_point(t[1]), search_point(t[2]));
-      m_corners.push_back(t);
+      m_corners.push_back(face_corners(f, input, vpm));
       index.emplace_back(f, std::uint32_t(index.size()));
     }
     std::sort(index.begin(), index.end());
@@ -91,8 +93,7 @@ class Hausdorff_input_surface {
       m_neighbours[i] = across;
     }
     m_flat_state.assign(m_corners.size(), {0, 0});
-    m_tree.rebuild(m_input.begin(), m_input.end());
-    m_tree.accelerate_distance_queries();
+    m_bvh = Triangle_bvh(m_corners);
   }
 
   Hausdorff_input_surface(const Hausdorff_input_surface&) = delete;
@@ -104,10 +105,11 @@ class Hausdorff_input_surface {
   const Triangle_corners& corners(std::size_t i) const { return m_corners[i]; }
 
   // An upper bound of p's distance (all the tests need): a walk across input edges from `hint`
-  // while the distance drops; beyond the tolerance, the AABB tree seeded with the walk's end.
+  // while the distance drops; beyond the tolerance, the exact nearest triangle (the lowest index
+  // among equals, whatever the hint), searched with the walk's end as a first bound.
   Reference_sample nearest(const Eigen::Vector3d& p,
                            std::size_t hint = Reference_sample::kNoTriangle) const {
-    const auto query = search_point(p);
+    Triangle_bvh::Hit start;
     if (hint != Reference_sample::kNoTriangle) {
       std::uint32_t at = std::uint32_t(hint);
       double d2 = squared_distance_to_triangle(p, m_corners[at]);
@@ -124,16 +126,11 @@ class Hausdorff_input_surface {
         if (at == from) break;
       }
       if (d2 <= m_tolerance * m_tolerance) return {std::sqrt(d2), at};
-      const auto primitive = m_input.cbegin() + at;
-      m_hint = {Search_kernel().construct_projected_point_3_object()(*primitive, query), primitive};
-      m_has_hint = true;
+      start = {at, d2};
     }
-    const auto nearest = m_has_hint ? m_tree.closest_point_and_primitive(query, m_hint)
-                                    : m_tree.closest_point_and_primitive(query);
-    m_hint = nearest;
-    m_has_hint = true;
-    return {std::sqrt(CGAL::squared_distance(query, nearest.first)),
-            std::size_t(nearest.second - m_input.cbegin())};
+    const Triangle_bvh::Hit hit = m_bvh.nearest(p, start);
+    if (hit.triangle == Triangle_bvh::kNone) return {};  // no input triangles
+    return {std::sqrt(hit.squared_distance), hit.triangle};
   }
 
   // Whether t lies within the tolerance of a flat part K of the input (Flat_frame): K grows through
@@ -186,12 +183,9 @@ class Hausdorff_input_surface {
  private:
   double m_diagonal = 0;
   double m_tolerance = 0;
-  Search_triangles m_input;
   std::vector<Triangle_corners> m_corners;
   std::vector<std::array<std::uint32_t, 3>> m_neighbours;
-  Search_tree m_tree;
-  mutable Search_tree::Point_and_primitive_id m_hint;
-  mutable bool m_has_hint = false;
+  Triangle_bvh m_bvh;
   mutable std::vector<std::pair<std::uint32_t, std::uint8_t>> m_flat_state;  // stamp, state
   mutable std::uint32_t m_flat_stamp = 0;
   mutable std::vector<std::uint32_t> m_flat_stack;

@@ -12,6 +12,8 @@
 #include <cgal_policies/Two_sided_fitter.h>
 #include <cgal_policies/internal/Border_curve.h>
 #include <cgal_policies/internal/Fit_guard.h>
+#include <cgal_policies/internal/Hausdorff_input_surface.h>
+#include <cgal_policies/internal/Triangle_bvh.h>
 #include <cgal_policies/internal/nearest_corner_values.h>
 
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
@@ -22,6 +24,8 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -302,6 +306,104 @@ TEST(NearestTrianglePoint, TakesTheNearestOfTheTrianglesItIsAllowed) {
       p, 2, [](std::size_t k) { return k == 0; }, plane_triangle);
   EXPECT_EQ(first.triangle, 0u);
   EXPECT_EQ(first.weights, (std::array<double, 3>{0, 1, 0}));
+}
+
+using cgal_policies::internal::Triangle_bvh;
+using cgal_policies::internal::Triangle_corners;
+
+// Eight of plane_triangle's triangles along x: two leaves of four.
+std::vector<Triangle_corners> plane_row() {
+  std::vector<Triangle_corners> row;
+  for (std::size_t k = 0; k < 8; ++k) row.push_back(plane_triangle(k));
+  return row;
+}
+
+TEST(TriangleBvh, GivesTheNearestTriangleAndItsSquaredDistance) {
+  const Triangle_bvh bvh(plane_row());
+  const Triangle_bvh::Hit above = bvh.nearest({2.25, 0.25, 1});  // above triangle 1's inside
+  EXPECT_EQ(above.triangle, 1u);
+  EXPECT_EQ(above.squared_distance, 1.0);
+  // Corner (7, 0, 0) of triangle 3 and corner (8, 0, 0) of triangle 4, in the other leaf, are as
+  // near: the lower index wins, even when the search starts from the other one.
+  const Eigen::Vector3d between(7.5, 0, 0);
+  for (const Triangle_bvh::Hit start : {Triangle_bvh::Hit{}, Triangle_bvh::Hit{4, 0.25}}) {
+    const Triangle_bvh::Hit hit = bvh.nearest(between, start);
+    EXPECT_EQ(hit.triangle, 3u);
+    EXPECT_EQ(hit.squared_distance, 0.25);
+  }
+  // A start nearer than every triangle is the answer; with no triangles, so is any start.
+  const Triangle_bvh::Hit nearer{Triangle_bvh::kNone, 0.5};
+  EXPECT_EQ(bvh.nearest({2.25, 0.25, 1}, nearer).triangle, Triangle_bvh::kNone);
+  EXPECT_EQ(Triangle_bvh().nearest({0, 0, 0}).triangle, Triangle_bvh::kNone);
+}
+
+// On the bunny, points on its triangles (a corner is the tie of all the triangles around it),
+// near them, inside its box and far away: the hierarchy's answer is the minimum of
+// squared_distance_to_triangle over every triangle, exactly, and the lowest index attaining it.
+// The input surface of the fitting pass gives the same distance whatever triangle it starts from.
+TEST(TriangleBvh, GivesTheBruteForceMinimumOnTheBunny) {
+  using cgal_policies::internal::squared_distance_to_triangle;
+  const Mesh bunny = apps::read_triangle_mesh(test_meshes::data_file("bunny.obj"));
+  const auto vpm = get(CGAL::vertex_point, bunny);
+  std::vector<Triangle_corners> triangles;
+  for (auto f : faces(bunny))
+    triangles.push_back(cgal_policies::internal::face_corners(f, bunny, vpm));
+  const Triangle_bvh bvh(triangles);
+  const cgal_policies::internal::Hausdorff_input_surface surface(bunny, vpm, 0.0, true);
+  ASSERT_EQ(surface.size(), triangles.size());
+  Eigen::Vector3d lo = triangles[0][0], hi = lo;
+  for (const Triangle_corners& t : triangles)
+    for (const Eigen::Vector3d& c : t) {
+      lo = lo.cwiseMin(c);
+      hi = hi.cwiseMax(c);
+    }
+  const double diagonal = (hi - lo).norm();
+  std::mt19937 random(7);  // its raw numbers are the same everywhere, unlike the distributions'
+  const auto unit = [&] { return double(random()) / 4294967296.0; };
+  const auto direction = [&] {
+    return Eigen::Vector3d(unit() - 0.5, unit() - 0.5, unit() - 0.5).normalized();
+  };
+  std::size_t zero = 0;
+  for (std::size_t q = 0; q < 4000; ++q) {
+    const Triangle_corners& t = triangles[random() % triangles.size()];
+    double a = unit(), b = unit();
+    if (a + b > 1) a = 1 - a, b = 1 - b;
+    const Eigen::Vector3d on = (1 - a - b) * t[0] + a * t[1] + b * t[2];
+    Eigen::Vector3d p;
+    switch (q % 5) {
+      case 0:
+        p = t[q / 5 % 3];
+        break;
+      case 1:
+        p = on;
+        break;
+      case 2:
+        p = on + 0.01 * diagonal * unit() * direction();
+        break;
+      case 3:
+        p = lo + Eigen::Vector3d(unit(), unit(), unit()).cwiseProduct(hi - lo);
+        break;
+      default:
+        p = 0.5 * (lo + hi) + 20 * diagonal * direction();
+        break;
+    }
+    Triangle_bvh::Hit brute;
+    for (std::size_t i = 0; i < triangles.size(); ++i) {
+      const double d2 = squared_distance_to_triangle(p, triangles[i]);
+      if (d2 < brute.squared_distance) brute = {std::uint32_t(i), d2};
+    }
+    zero += brute.squared_distance == 0;
+    const Triangle_bvh::Hit hit = bvh.nearest(p);
+    ASSERT_EQ(hit.squared_distance, brute.squared_distance) << "query " << q;
+    ASSERT_EQ(hit.triangle, brute.triangle) << "query " << q;
+    // A walk that reaches a distance of 0 stops there, at a triangle that need not be the first.
+    const auto near = surface.nearest(p, random() % triangles.size());
+    ASSERT_EQ(near.distance, std::sqrt(brute.squared_distance)) << "query " << q;
+    if (brute.squared_distance > 0) {
+      ASSERT_EQ(near.triangle, brute.triangle) << "query " << q;
+    }
+  }
+  EXPECT_GE(zero, 800u);  // at least the corners
 }
 
 // Blends like a texture coordinate, and marks every blend with a tenth more, so that a test can
