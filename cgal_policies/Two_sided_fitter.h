@@ -1,14 +1,15 @@
 // Two_sided_fitter: fits a simplified mesh to the input it came from, its connectivity fixed but
 // for edge flips, after Hoppe et al.'s mesh optimization [Hoppe93] (the distance energy solved as a
 // sparse linear least-squares problem, then edge swaps), with the distance measured both ways
-// (docs/fitting.md). Each round matches samples of the input to their nearest output points (a
-// walk from the face they were on last round; an AABB tree of the output at first and when a walk
-// loses its way) and samples of the output to their nearest input points (an AABB tree of the
-// input, built once), then solves for every vertex at once (Eigen's sparse Cholesky), each match
-// measured as the distance to its tangent plane, so vertices slide along the surface. Reweighting
-// by the distances aims the fit at the mean (L1) distance. A vertex moves at most a fraction of its
-// mean edge length per round; a flip round then flips each interior edge whose two faces' two-sided
-// error drops, never making an edge twice, a vertex of degree < 4 one of degree < 3, or a fold.
+// (docs/fitting.md). Each round matches samples of the input to their nearest output points (a walk
+// from the face they were on last round; an AABB tree of the output at first and when a walk loses
+// its way) and samples of the output to their nearest input points (a bounding-volume hierarchy of
+// the input, built once), then solves for every vertex at once (Eigen's sparse Cholesky), each
+// match measured as the distance to its tangent plane, so vertices slide along the surface.
+// Reweighting by the distances aims the fit at the mean (L1) distance. A vertex moves at most a
+// fraction of its mean edge length per round; a flip round then flips each interior edge whose two
+// faces' two-sided error drops, never making an edge twice, a vertex of degree < 4 one of
+// degree < 3, or a fold.
 // Guarantees: no face normal turns by more than max_normal_angle_deg from its direction before the
 // pass (a flipped edge's faces: from their old normals' mean), no face becomes degenerate, no
 // moved or flipped face crosses another face (exact predicates; intersections the mesh had before
