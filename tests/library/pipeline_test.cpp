@@ -228,7 +228,8 @@ INSTANTIATE_TEST_SUITE_P(Registry, EveryPolicy, testing::ValuesIn(policy_names()
 // Face counts, stop reasons and two-sided errors (20,000 samples per direction) of every policy on
 // the two small shipped meshes, measured with the code as it stood before the quadric engine and
 // the typed options were introduced (which kept every output byte for byte). A change that moves
-// any of them must be deliberate: measure again and say why in the commit.
+// any of them must be deliberate: measure again and say why in the commit. (The cow's hausdorff
+// run in scan order moved when the certifier's nearest input triangle came from Triangle_bvh.)
 struct Pinned_run {
   const char* mesh;
   double ratio;
@@ -503,12 +504,12 @@ INSTANTIATE_TEST_SUITE_P(ShippedMeshes, PinnedResults,
                               "hausdorff",
                               {{"scan-order", 1}},
                               0,
-                              698,
-                              351,
+                              686,
+                              345,
                               Stop_reason::no_collapse_left,
                               0.004997397996,
-                              0.001529624391,
-                              0.001529519161},
+                              0.001547464813,
+                              0.001553153999},
                          }),
                          [](const auto& test) {
                            std::string name =
