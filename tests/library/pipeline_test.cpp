@@ -792,17 +792,17 @@ void expect_kept_as_a_partitioned_run_keeps(const Mesh& mesh, std::size_t target
   EXPECT_EQ(after.euler_characteristic, before.euler_characteristic);
 }
 
-// The bunny cut into four parts and simplified with each policy: a valid output at the target,
-// closed where the input is, its mean error within 3% of the whole run's, and the same bytes on
-// one thread and on two.
-class PartitionedRun : public testing::TestWithParam<std::string> {};
-
-TEST_P(PartitionedRun, KeepsTheInvariantsAndGivesTheSameBytesOnAnyThreadCount) {
-  SKIP_IF_REAL_MESHES_ARE_OFF();
+// The bunny to 1/`reduction` of its faces with `policy` (after fast's prepass to `prepass_factor`
+// times the target, if not 0), cut into four parts: a valid output at the target, closed where the
+// input is, its mean error within 3% of the same run whole, and the same bytes on one thread and
+// on two.
+void expect_four_parts_keep_the_whole_run(const std::string& policy, std::size_t reduction,
+                                          double prepass_factor) {
   const Mesh input = apps::read_triangle_mesh(data_file("bunny.obj"));
   const apps::Mesh_validity before = apps::check_mesh_validity(input);
-  const std::size_t target = input.number_of_faces() / 20;
-  cgal_policies::Simplification_options options = policy_alone(GetParam(), target);
+  const std::size_t target = input.number_of_faces() / reduction;
+  cgal_policies::Simplification_options options = policy_alone(policy, target);
+  options.prepass_factor = prepass_factor;
   Mesh whole = input;
   apps::Pipeline(options).run(whole);
   options.parts = 4;
@@ -815,10 +815,18 @@ TEST_P(PartitionedRun, KeepsTheInvariantsAndGivesTheSameBytesOnAnyThreadCount) {
     EXPECT_EQ(report.stop_reason, cgal_policies::Stop_reason::target_reached);
     expect_kept_as_a_partitioned_run_keeps(mesh, target, before);
     EXPECT_LT(mean_error(input, mesh), 1.03 * mean_error(input, whole));
-    bytes[threads - 1] = written_bytes(mesh, GetParam() + std::to_string(threads));
+    bytes[threads - 1] = written_bytes(mesh, policy + std::to_string(threads));
   }
   EXPECT_FALSE(bytes[0].empty());
   EXPECT_TRUE(bytes[0] == bytes[1]) << "one thread and two wrote different files";
+}
+
+// Each policy that runs in parts, to 5%.
+class PartitionedRun : public testing::TestWithParam<std::string> {};
+
+TEST_P(PartitionedRun, KeepsTheInvariantsAndGivesTheSameBytesOnAnyThreadCount) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  expect_four_parts_keep_the_whole_run(GetParam(), 20, 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Policies, PartitionedRun,
@@ -882,31 +890,11 @@ TEST(Prepass, StepsAsideOnASmallMeshAndStopsWhenInterrupted) {
   EXPECT_TRUE(apps::check_mesh_validity(interrupted).valid);
 }
 
-// The prepass in each cell of a partitioned run: the invariants of a partitioned run, the same
-// bytes on one thread and on two, and the mean error of the same run whole within 3%.
+// The prepass in each cell of a partitioned run, to 1%: what a partitioned run keeps, against
+// the same run whole with its prepass.
 TEST(Prepass, KeepsWhatAPartitionedRunKeeps) {
   SKIP_IF_REAL_MESHES_ARE_OFF();
-  const Mesh input = apps::read_triangle_mesh(data_file("bunny.obj"));
-  const apps::Mesh_validity before = apps::check_mesh_validity(input);
-  const std::size_t target = input.number_of_faces() / 100;
-  cgal_policies::Simplification_options options = policy_alone("flat-lt", target);
-  options.prepass_factor = 10;
-  Mesh whole = input;
-  apps::Pipeline(options).run(whole);
-  options.parts = 4;
-  std::string bytes[2];
-  for (const std::size_t threads : {1, 2}) {
-    options.threads = threads;
-    Mesh mesh = input;
-    const cgal_policies::Simplification_report report = apps::Pipeline(options).run(mesh);
-    EXPECT_EQ(report.parts, 4u);
-    EXPECT_EQ(report.stop_reason, cgal_policies::Stop_reason::target_reached);
-    expect_kept_as_a_partitioned_run_keeps(mesh, target, before);
-    EXPECT_LT(mean_error(input, mesh), 1.03 * mean_error(input, whole));
-    bytes[threads - 1] = written_bytes(mesh, "prepass" + std::to_string(threads));
-  }
-  EXPECT_FALSE(bytes[0].empty());
-  EXPECT_TRUE(bytes[0] == bytes[1]) << "one thread and two wrote different files";
+  expect_four_parts_keep_the_whole_run("flat-lt", 100, 10);
 }
 
 // The fit by cells pins the vertices on the cuts for half its rounds: its mean error stays within
