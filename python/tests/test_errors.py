@@ -27,6 +27,7 @@ def tool_message(*options):
     ({"target_count": 0}, ["--faces", "0"]),
     ({"smooth_method": "cubic"}, ["0.1", "--smooth-method", "cubic"]),
     ({"threads": 2.5}, ["0.1", "--threads", "2.5"]),
+    ({"policy": "fast", "prepass": 4}, ["0.1", "--policy", "fast", "--prepass", "4"]),
 ])
 def test_options_are_refused_with_the_command_lines_message(keywords, options):
     with pytest.raises(ValueError) as raised:

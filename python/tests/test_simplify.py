@@ -39,6 +39,9 @@ def same_report(python_report, tool_report, repairs):
      {"ratio": 0.2, "policy": "curvature", "min_component": 3, "smooth": 2}),
     # Cells on two threads, which call back into Python from threads of their own.
     ("bunny.obj", ["0.1", "--parts", "4", "--threads", "2"], {"ratio": 0.1, "parts": 4, "threads": 2}),
+    # Fast's prepass in each cell.
+    ("bunny.obj", ["0.01", "--policy", "flat-lt", "--prepass", "10", "--parts", "4"],
+     {"ratio": 0.01, "policy": "flat-lt", "prepass": 10, "parts": 4}),
 ])
 def test_arrays_give_the_tools_bytes(tmp_path, data, source, options, keywords):
     expected, tool_report = tool_run(tmp_path, data / source, "tool.obj", *options)
