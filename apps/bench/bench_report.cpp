@@ -315,6 +315,9 @@ std::string markdown_report(const std::vector<Run_record>& records, const std::s
         " face samples per direction, in % of the input's bounding-box diagonal; mean → is "
         "input to result, ← result to input. Peak MiB: the process's resident peak during the "
         "run (+ what the run added).\n\n";
+  if (plan.prepass_factor > 0)
+    md += "Every pipeline row without a bound ran fast first, down to " +
+          Json_object::format_number(plan.prepass_factor) + " times its target (--prepass).\n\n";
   if (std::any_of(records.begin(), records.end(),
                   [](const Run_record& r) { return !r.error_measured; }))
     md +=

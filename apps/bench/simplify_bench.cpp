@@ -299,7 +299,9 @@ int run(int argc, char** argv) {
   }
   plan.prepass_factor = prepass_factor;
   if (plan.prepass_factor > 0 && plan.time_limit_seconds > 0)
-    throw App_error(exit_usage, "--prepass runs fast, which keeps no time limit: not with one");
+    throw App_error(exit_usage,
+                    "--prepass runs fast, which keeps no time limit: not with one (a preset's "
+                    "too: give --time-limit 0)");
   // The "P+fit" rows: beside every policy of this suite with --fit, beside the preset's choice
   // without.
   std::vector<std::string> fitted;

@@ -241,6 +241,30 @@ TEST(BenchTimeLimit, StopsARunWhereItIsAndDoesNotRepeatIt) {
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 2) << status;
 }
 
+// --prepass K: every row reaches its target, the report says the rows ran fast first, and a time
+// limit is refused (fast has none).
+TEST(BenchPrepass, RunsTheRowsAfterFastAndSaysSo) {
+  const fs::path out =
+      fs::temp_directory_path() / ("cgal_policies_bench_prepass_" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  const std::string bench = std::string(CGAL_POLICIES_BIN_DIR) + "/simplify_bench --mesh '" +
+                            CGAL_POLICIES_SOURCE_DIR + "/data/cow.obj' --ratios 0.1 ";
+  ASSERT_EQ(run_command(bench + "--policies flat-lt,fast --prepass 4 --repetitions 1 --samples " +
+                        "1000 --out '" + out.string() + "' > /dev/null 2>&1"),
+            0);
+  const std::vector<Row> rows = read_csv(out / "runs.csv");
+  ASSERT_EQ(rows.size(), 3u);  // gh, flat-lt, fast
+  for (const Row& row : rows) {
+    EXPECT_EQ(row.at("output_faces"), "580") << row.at("policy");
+    EXPECT_EQ(row.at("valid"), "true") << row.at("policy");
+  }
+  EXPECT_NE(read_text(out / "report.md").find("ran fast first, down to 4 times its target"),
+            std::string::npos);
+  fs::remove_all(out);
+  const int status = run_command(bench + "--prepass 4 --time-limit 5 > /dev/null 2>&1");
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 2) << status;
+}
+
 // --fit adds a P+fit row beside each policy, with the pass's time and a "Fitting pass" table that
 // compares it with P and with lt.
 TEST(BenchFit, AddsAFittedRowBesideEachPolicy) {
