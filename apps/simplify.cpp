@@ -103,7 +103,9 @@ void print_help() {
          "                        OUT is not written (exit 4, or 1 without OpenGL); when\n"
          "                        OUT is an OBJ, a textured IN is drawn with its texture\n"
          "                        (map_Kd; exit 3 when that file is missing); needs a build\n"
-         "                        with mesh_viewer's packages\n"
+         "                        with mesh_viewer's packages"
+      << (snapshots_in_this_build() ? "" : " (not in this build)")
+      << "\n"
          "  --size WxH            the snapshot's size in pixels (default 1600x800)\n"
          "  --force               allow OUT to be the same file as IN\n"
          "  --quiet               no progress bar, no summary\n"

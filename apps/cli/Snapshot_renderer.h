@@ -28,6 +28,9 @@ class Snapshot_renderer {
 // This build's renderer, drawing `width` x `height` pixels; nullptr when it was built without.
 std::unique_ptr<Snapshot_renderer> make_snapshot_renderer(int width, int height);
 
+// Whether this build has a renderer (make_snapshot_renderer gives one), without making it.
+bool snapshots_in_this_build();
+
 // --size's "WxH", 16 to 16384 pixels each; App_error(exit_usage) otherwise.
 std::pair<int, int> parse_picture_size(const std::string& text);
 

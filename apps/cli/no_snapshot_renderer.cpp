@@ -5,4 +5,6 @@ namespace apps {
 
 std::unique_ptr<Snapshot_renderer> make_snapshot_renderer(int, int) { return nullptr; }
 
+bool snapshots_in_this_build() { return false; }
+
 }  // namespace apps

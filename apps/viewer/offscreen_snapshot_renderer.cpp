@@ -33,4 +33,6 @@ std::unique_ptr<Snapshot_renderer> make_snapshot_renderer(int width, int height)
   return std::make_unique<Offscreen_snapshot_renderer>(width, height);
 }
 
+bool snapshots_in_this_build() { return true; }
+
 }  // namespace apps
