@@ -96,12 +96,19 @@ std::size_t count_occurrences(const std::string& text, const std::string& what) 
 
 int run_command(const std::string& command) { return std::system(command.c_str()); }
 
+// An output folder of this process for the test `name`, gone if an earlier run left it.
+fs::path fresh_out(const std::string& name) {
+  const fs::path out =
+      fs::temp_directory_path() / ("cgal_policies_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  return out;
+}
+
 class BenchQuickPreset : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     if (test_meshes::real_meshes_skipped()) return;
-    s_out = fs::temp_directory_path() / ("cgal_policies_bench_test_" + std::to_string(::getpid()));
-    fs::remove_all(s_out);
+    s_out = fresh_out("bench_test");
     s_exit =
         run_command(std::string(CGAL_POLICIES_BIN_DIR) + "/simplify_bench --preset quick --data '" +
                     CGAL_POLICIES_DATA_DIR + "' --out '" + s_out.string() + "' > '" +
@@ -219,9 +226,7 @@ TEST_F(BenchQuickPreset, GhRowsMatchSimplify) {
 // A limit that has passed before the first collapse: every edge-collapse run stops at once, is
 // marked in the report and is not repeated.
 TEST(BenchTimeLimit, StopsARunWhereItIsAndDoesNotRepeatIt) {
-  const fs::path out =
-      fs::temp_directory_path() / ("cgal_policies_bench_limit_" + std::to_string(::getpid()));
-  fs::remove_all(out);
+  const fs::path out = fresh_out("bench_limit");
   const std::string bench = std::string(CGAL_POLICIES_BIN_DIR) + "/simplify_bench --mesh '" +
                             CGAL_POLICIES_SOURCE_DIR + "/data/cow.obj' --ratios 0.5 ";
   ASSERT_EQ(
@@ -244,9 +249,7 @@ TEST(BenchTimeLimit, StopsARunWhereItIsAndDoesNotRepeatIt) {
 // --prepass K: every row reaches its target, the report says the rows ran fast first, and a time
 // limit is refused (fast has none).
 TEST(BenchPrepass, RunsTheRowsAfterFastAndSaysSo) {
-  const fs::path out =
-      fs::temp_directory_path() / ("cgal_policies_bench_prepass_" + std::to_string(::getpid()));
-  fs::remove_all(out);
+  const fs::path out = fresh_out("bench_prepass");
   const std::string bench = std::string(CGAL_POLICIES_BIN_DIR) + "/simplify_bench --mesh '" +
                             CGAL_POLICIES_SOURCE_DIR + "/data/cow.obj' --ratios 0.1 ";
   ASSERT_EQ(run_command(bench + "--policies flat-lt,fast --prepass 4 --repetitions 1 --samples " +
@@ -269,9 +272,7 @@ TEST(BenchPrepass, RunsTheRowsAfterFastAndSaysSo) {
 // compares it with P and with lt.
 TEST(BenchFit, AddsAFittedRowBesideEachPolicy) {
   SKIP_IF_REAL_MESHES_ARE_OFF();
-  const fs::path out =
-      fs::temp_directory_path() / ("cgal_policies_bench_fit_" + std::to_string(::getpid()));
-  fs::remove_all(out);
+  const fs::path out = fresh_out("bench_fit");
   ASSERT_EQ(run_command(std::string(CGAL_POLICIES_BIN_DIR) + "/simplify_bench --mesh '" +
                         CGAL_POLICIES_SOURCE_DIR + "/data/cow.obj' --ratios 0.1 --policies lt " +
                         "--fit --repetitions 1 --samples 20000 --out '" + out.string() +
@@ -297,9 +298,7 @@ TEST(BenchFit, AddsAFittedRowBesideEachPolicy) {
 // texture field every run (fast too) reproduces the field exactly and keeps its one seam (the
 // border).
 TEST(BenchAttributes, CarriesAndMeasuresTheCornerAttributes) {
-  const fs::path out =
-      fs::temp_directory_path() / ("cgal_policies_bench_attributes_" + std::to_string(::getpid()));
-  fs::remove_all(out);
+  const fs::path out = fresh_out("bench_attributes");
   fs::create_directories(out);
   test_meshes::Mesh grid = test_meshes::flat_grid(6);
   test_meshes::paint_corners(
@@ -394,9 +393,7 @@ TEST(BenchScalePreset, MissingInputsSayHowToMakeThem) {
 // simplify --out-of-core makes them, their error not measured.
 TEST(BenchScalePreset, RunsItsRowsOnStandIns) {
   SKIP_IF_TOO_SLOW_WHEN_SANITIZED();
-  const fs::path out =
-      fs::temp_directory_path() / ("cgal_policies_bench_scale_" + std::to_string(::getpid()));
-  fs::remove_all(out);
+  const fs::path out = fresh_out("bench_scale");
   const fs::path inputs = out / "inputs";
   fs::create_directories(inputs);
   const test_meshes::Mesh sphere = test_meshes::loop_sphere(4);

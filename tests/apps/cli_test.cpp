@@ -92,6 +92,16 @@ std::vector<double> json_numbers(const std::string& json, const std::string& fie
   return numbers;
 }
 
+// test_meshes::loop_sphere(levels) written to `path` as OFF, its points read back exactly: at 2
+// levels a closed sphere of 320 faces, which loses two faces a collapse, so that every even target
+// is met exactly.
+fs::path write_sphere(const fs::path& path, int levels = 2) {
+  const test_meshes::Mesh sphere = test_meshes::loop_sphere(levels);
+  EXPECT_TRUE(
+      CGAL::IO::write_polygon_mesh(path.string(), sphere, CGAL::parameters::stream_precision(17)));
+  return path;
+}
+
 class Cli : public testing::Test {
  protected:
   void SetUp() override {
@@ -351,10 +361,7 @@ TEST_F(Cli, ASnapshotThatCannotBeWrittenLeavesNoMeshEither) {
 TEST_F(Cli, MaxErrorBoundsEveryEdgeCollapsePolicy) {
   // A sphere of 1,280 faces: curved everywhere, so the bound must stop every policy early, and
   // small enough for the sanitized build.
-  const fs::path sphere = file("sphere.off");
-  test_meshes::Mesh input = test_meshes::loop_sphere(3);
-  ASSERT_TRUE(
-      CGAL::IO::write_polygon_mesh(sphere.string(), input, CGAL::parameters::stream_precision(17)));
+  const fs::path sphere = write_sphere(file("sphere.off"), 3);
   const fs::path out = file("sphere_out.off");
   for (const char* policy : {"gh", "classic", "curvature"}) {
     const std::string args = sphere.string() + " " + out.string() + " --ratio 0.01 --policy " +
@@ -378,10 +385,7 @@ TEST_F(Cli, MaxErrorBoundsEveryEdgeCollapsePolicy) {
 
 TEST_F(Cli, FitIsReportedAndTwoRunsWriteTheSameBytes) {
   // A small sphere, so that the sanitized build runs it in seconds.
-  const fs::path sphere = file("sphere.off");
-  const test_meshes::Mesh small = test_meshes::loop_sphere(2);
-  ASSERT_TRUE(
-      CGAL::IO::write_polygon_mesh(sphere.string(), small, CGAL::parameters::stream_precision(17)));
+  const fs::path sphere = write_sphere(file("sphere.off"));
   std::string written[2];
   for (int run_index = 0; run_index < 2; ++run_index) {
     const fs::path out = file("sphere_" + std::to_string(run_index) + ".ply");
@@ -407,10 +411,7 @@ TEST_F(Cli, FitIsReportedAndTwoRunsWriteTheSameBytes) {
 // --prepass K: reported, and refused where fast cannot keep what the run asks (a bound, a time
 // limit) or would run twice.
 TEST_F(Cli, PrepassIsReportedAndRefusedWhereFastCannotRun) {
-  const fs::path sphere = file("sphere.off");
-  test_meshes::Mesh input = test_meshes::loop_sphere(3);
-  ASSERT_TRUE(
-      CGAL::IO::write_polygon_mesh(sphere.string(), input, CGAL::parameters::stream_precision(17)));
+  const fs::path sphere = write_sphere(file("sphere.off"), 3);
   const fs::path out = file("sphere_out.ply");
   const Command_result r = run("simplify", sphere.string() + " " + out.string() +
                                                " --faces 64 --policy flat-lt --prepass 4 --json");
@@ -1261,15 +1262,6 @@ TEST_F(Cli, OutOfCoreReadsBinaryPlyAndObjAlike) {
               outputs[1].substr(outputs[1].find("end_header")))
       << "the PLY and the OBJ gave different outputs";
   EXPECT_TRUE(fs::is_empty(spill));
-}
-
-// A closed sphere of 320 faces, which loses two faces a collapse: every even target is met
-// exactly.
-fs::path write_sphere(const fs::path& path) {
-  const test_meshes::Mesh sphere = test_meshes::loop_sphere(2);
-  EXPECT_TRUE(
-      CGAL::IO::write_polygon_mesh(path.string(), sphere, CGAL::parameters::stream_precision(17)));
-  return path;
 }
 
 // --lod with an OBJ or PLY OUT: a file per level, OUT's stem with _lod0, _lod1, ..., each level
