@@ -342,6 +342,7 @@ TEST(TriangleBvh, GivesTheNearestTriangleAndItsSquaredDistance) {
 // squared_distance_to_triangle over every triangle, exactly, and the lowest index attaining it.
 // The input surface of the fitting pass gives the same distance whatever triangle it starts from.
 TEST(TriangleBvh, GivesTheBruteForceMinimumOnTheBunny) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();  // 4,000 brute-force scans of its 70k triangles
   using cgal_policies::internal::squared_distance_to_triangle;
   const Mesh bunny = apps::read_triangle_mesh(test_meshes::data_file("bunny.obj"));
   const auto vpm = get(CGAL::vertex_point, bunny);
