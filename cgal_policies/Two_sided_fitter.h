@@ -2,9 +2,9 @@
 // for edge flips, after Hoppe et al.'s mesh optimization [Hoppe93] (the distance energy solved as a
 // sparse linear least-squares problem, then edge swaps), with the distance measured both ways
 // (docs/fitting.md). Each round matches samples of the input to their nearest output points (a walk
-// from the face they were on last round; an AABB tree of the output at first and when a walk loses
-// its way) and samples of the output to their nearest input points (a bounding-volume hierarchy of
-// the input, built once), then solves for every vertex at once (Eigen's sparse Cholesky), each
+// from the face they were on last round; a bounding-volume hierarchy of the output at first and
+// when a walk loses its way) and samples of the output to their nearest input points (a hierarchy
+// of the input, built once), then solves for every vertex at once (Eigen's sparse Cholesky), each
 // match measured as the distance to its tangent plane, so vertices slide along the surface.
 // Reweighting by the distances aims the fit at the mean (L1) distance. A vertex moves at most a
 // fraction of its mean edge length per round; a flip round then flips each interior edge whose two

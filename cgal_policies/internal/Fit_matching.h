@@ -1,6 +1,6 @@
 // The matches of one round of the fitting pass, both ways (docs/fitting.md): each input sample's
-// nearest output point, found by a walk from the face it was on last round or by an AABB tree of
-// the output, and samples of every output face with their nearest input points.
+// nearest output point, found by a walk from the face it was on last round or by a bounding-volume
+// hierarchy of the output, and samples of every output face with their nearest input points.
 #ifndef CGAL_POLICIES_INTERNAL_FIT_MATCHING_H
 #define CGAL_POLICIES_INTERNAL_FIT_MATCHING_H
 

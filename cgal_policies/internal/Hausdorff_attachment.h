@@ -5,6 +5,7 @@
 #define CGAL_POLICIES_INTERNAL_HAUSDORFF_ATTACHMENT_H
 
 #include <cgal_policies/internal/Hausdorff_input_surface.h>
+#include <cgal_policies/internal/Triangle_bvh.h>
 #include <cgal_policies/internal/mesh_geometry.h>
 #include <cgal_policies/internal/piece_cover.h>
 #include <cgal_policies/internal/triangle_distance.h>
@@ -66,27 +67,22 @@ class Hausdorff_attachment {
   template <typename VertexPointMap>
   void attach_to_approximation(const TriangleMesh& tm, const VertexPointMap& vpm,
                                const Hausdorff_input_surface& input, int max_refinement) {
-    using Input = Hausdorff_input_surface;
     m_pieces.clear();
-    Input::Search_triangles current;
+    std::vector<Triangle_corners> current;
     std::vector<face_descriptor> current_faces;
     for (auto f : faces(tm)) {
-      const Triangle_corners t = face_corners(f, tm, vpm);
-      current.emplace_back(Input::search_point(t[0]), Input::search_point(t[1]),
-                           Input::search_point(t[2]));
+      current.push_back(face_corners(f, tm, vpm));
       current_faces.push_back(f);
       put(m_face_pieces, f, std::vector<std::uint32_t>());
       put(m_frozen, f, false);
     }
     for (auto v : vertices(tm)) put(m_samples, v, input.nearest(to_eigen(get(vpm, v))));
     if (current.empty()) return;
-    Input::Search_tree tree(current.begin(), current.end());
-    tree.accelerate_distance_queries();
+    const Triangle_bvh tree(current);
     for (std::size_t i = 0; i < input.size(); ++i) {
       const Triangle_corners& piece = input.corners(i);
       const Eigen::Vector3d centroid = (piece[0] + piece[1] + piece[2]) / 3;
-      const auto nearest = tree.closest_point_and_primitive(Input::search_point(centroid)).second;
-      const face_descriptor f = current_faces[std::size_t(nearest - current.cbegin())];
+      const face_descriptor f = current_faces[tree.nearest(centroid).triangle];
       std::vector<face_descriptor> around;
       for (auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
         for (auto g : CGAL::faces_around_target(h, tm))

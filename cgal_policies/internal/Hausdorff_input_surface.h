@@ -10,13 +10,10 @@
 #include <cgal_policies/internal/patch_distance.h>
 #include <cgal_policies/internal/triangle_distance.h>
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
-#include <CGAL/Simple_cartesian.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
 
 #include <algorithm>
 #include <array>
@@ -50,18 +47,6 @@ Triangle_corners face_corners(typename boost::graph_traits<Mesh>::face_descripto
 
 class Hausdorff_input_surface {
  public:
-  // CGAL's AABB tree, for the searches of other meshes (Fit_output_tree, resolve_free_uvs,
-  // Hausdorff_attachment); the input's own search is m_bvh.
-  using Search_kernel = CGAL::Simple_cartesian<double>;
-  using Search_triangles = std::vector<Search_kernel::Triangle_3>;
-  using Search_tree = CGAL::AABB_tree<CGAL::AABB_traits<
-      Search_kernel,
-      CGAL::AABB_triangle_primitive<Search_kernel, Search_triangles::const_iterator>>>;
-
-  static Search_kernel::Point_3 search_point(const Eigen::Vector3d& p) {
-    return {p.x(), p.y(), p.z()};
-  }
-
   // Not `indexed` (local reference): only the tolerance, tolerance_fraction * D, is known.
   template <typename InputMesh, typename VertexPointMap>
   Hausdorff_input_surface(const InputMesh& input, const VertexPointMap& vpm,
@@ -70,27 +55,21 @@ class Hausdorff_input_surface {
         CGAL::Polygon_mesh_processing::bbox(input, CGAL::parameters::vertex_point_map(vpm)));
     m_tolerance = tolerance_fraction * m_diagonal;
     if (!indexed) return;
-    using Input_face = typename boost::graph_traits<InputMesh>::face_descriptor;
-    std::vector<std::pair<Input_face, std::uint32_t>> index;
+    const auto index = get(CGAL::dynamic_face_property_t<std::uint32_t>(), input);
     for (auto f : faces(input)) {
+      put(index, f, std::uint32_t(m_corners.size()));
       m_corners.push_back(face_corners(f, input, vpm));
-      index.emplace_back(f, std::uint32_t(index.size()));
     }
-    std::sort(index.begin(), index.end());
     m_neighbours.resize(m_corners.size());
     // Across edge k of input triangle i (corners k, k + 1) lies m_neighbours[i][k].
-    for (const auto& [f, i] : index) {
-      std::array<std::uint32_t, 3> across;
+    for (auto f : faces(input)) {
+      std::array<std::uint32_t, 3>& across = m_neighbours[get(index, f)];
       int k = 0;
       for (auto h : CGAL::halfedges_around_face(halfedge(f, input), input)) {
-        const Input_face g = face(opposite(h, input), input);
-        const auto it = std::lower_bound(index.begin(), index.end(), std::make_pair(g, 0u));
+        const auto g = face(opposite(h, input), input);
         across[k++] =
-            g == boost::graph_traits<InputMesh>::null_face() || it == index.end() || it->first != g
-                ? kNoNeighbour
-                : it->second;
+            g == boost::graph_traits<InputMesh>::null_face() ? kNoNeighbour : get(index, g);
       }
-      m_neighbours[i] = across;
     }
     m_flat_state.assign(m_corners.size(), {0, 0});
     m_bvh = Triangle_bvh(m_corners);

@@ -8,6 +8,7 @@
 
 #include <cgal_policies/Corner_attributes.h>
 #include <cgal_policies/internal/Hausdorff_input_surface.h>
+#include <cgal_policies/internal/Triangle_bvh.h>
 #include <cgal_policies/internal/mesh_geometry.h>
 #include <cgal_policies/internal/surface_samples.h>
 #include <cgal_policies/internal/triangle_closest_point.h>
@@ -21,6 +22,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -47,7 +49,6 @@ void resolve_free_uvs(CGAL::Surface_mesh<Point>& mesh, const CGAL::Surface_mesh<
   using Mesh = CGAL::Surface_mesh<Point>;
   using Attributes = Corner_attributes<Point>;
   using Uv = typename Attributes::Uv;
-  using Search = Hausdorff_input_surface;
   const Attributes attributes(mesh), input(original);
   if (!attributes.uvs || !input.uvs) return;
   const double extent = input.uv_extent(original);
@@ -63,16 +64,11 @@ void resolve_free_uvs(CGAL::Surface_mesh<Point>& mesh, const CGAL::Surface_mesh<
   if (vertex.empty()) return;
   std::vector<typename Mesh::Face_index> face;
   std::vector<Triangle_corners> corners;  // of face[k], the tree's triangle k
-  Search::Search_triangles triangles;
   for (const auto f : mesh.faces()) {
-    const Triangle_corners t = face_corners(f, mesh, mesh.points());
-    triangles.emplace_back(Search::search_point(t[0]), Search::search_point(t[1]),
-                           Search::search_point(t[2]));
-    corners.push_back(t);
+    corners.push_back(face_corners(f, mesh, mesh.points()));
     face.push_back(f);
   }
-  Search::Search_tree tree(triangles.begin(), triangles.end());
-  tree.accelerate_distance_queries();
+  const Triangle_bvh tree(corners);
 
   // The normal equations, one column of right-hand sides per texture coordinate.
   const Eigen::Index n = Eigen::Index(vertex.size());
@@ -91,8 +87,7 @@ void resolve_free_uvs(CGAL::Surface_mesh<Point>& mesh, const CGAL::Surface_mesh<
         want += b[k] * Eigen::Vector2d((*input.uvs)[gc[k]][0], (*input.uvs)[gc[k]][1]);
       if (!want.allFinite()) break;  // a face without texture coordinates
       const Eigen::Vector3d p = b[0] * gp[0] + b[1] * gp[1] + b[2] * gp[2];
-      const auto nearest = tree.closest_point_and_primitive(Search::search_point(p));
-      const std::size_t at = std::size_t(nearest.second - triangles.cbegin());
+      const std::uint32_t at = tree.nearest(p).triangle;
       const auto h = mesh.halfedge(face[at]);
       // Corner k sits at corner k of corners[at]: source(h), target(h), target(next(h)).
       const std::array<typename Mesh::Halfedge_index, 3> fc{mesh.prev(h), h, mesh.next(h)};
