@@ -201,7 +201,7 @@ class Simplification_pipeline {
     job.report.parts = cells ? cells->size() : 1;
     if (cells) {
       internal::collapse_zero_length_edges(mesh);
-      const std::vector<std::uint32_t> cell = internal::face_cells(mesh, *cells);
+      const std::vector<std::uint32_t> cell = internal::face_cells(mesh, *cells, m_options.threads);
       for (std::size_t c = 0; c < cells->size(); ++c)
         internal::write_raw_mesh(internal::mesh_part(mesh, cell, std::uint32_t(c)),
                                  internal::part_file(folder, 0, c));
@@ -218,12 +218,13 @@ class Simplification_pipeline {
       internal::write_raw_mesh(*input, internal::job_input_file(folder));
     if (input && cells && m_options.fit && fits_by_cells()) {
       // The input's part of each cell, for the fit's stages: the same cells, then shifted ones.
-      const std::vector<Eigen::Vector3d> centroids = internal::face_centroids(*input);
+      const std::vector<Eigen::Vector3d> centroids =
+          internal::face_centroids(*input, m_options.threads);
       const internal::Spatial_cells shifted = internal::shifted_cells(centroids, *cells);
       job.shifted_cells = shifted.splits();
       for (const int stage : {1, 2}) {
         const std::vector<std::uint32_t> cell =
-            internal::face_cells(centroids, stage == 1 ? *cells : shifted);
+            internal::face_cells(centroids, stage == 1 ? *cells : shifted, m_options.threads);
         for (std::size_t c = 0; c < cells->size(); ++c)
           internal::write_raw_mesh(internal::mesh_part(*input, cell, std::uint32_t(c), false),
                                    internal::near_part_file(folder, stage, c));
@@ -336,7 +337,7 @@ class Simplification_pipeline {
     }
     if (next > 0) {
       const internal::Spatial_cells by(next == 1 ? job.cells : job.shifted_cells);
-      const std::vector<std::uint32_t> cell = internal::face_cells(mesh, by);
+      const std::vector<std::uint32_t> cell = internal::face_cells(mesh, by, m_options.threads);
       for (std::size_t c = 0; c < parts; ++c)
         internal::write_raw_mesh(internal::mesh_part(mesh, cell, std::uint32_t(c)),
                                  internal::part_file(folder, next, c));
@@ -452,7 +453,7 @@ class Simplification_pipeline {
   std::optional<internal::Spatial_cells> cells_of(const Mesh& mesh) const {
     const std::size_t count = m_options.cell_count(mesh.number_of_faces());
     if (count <= 1) return std::nullopt;
-    return internal::Spatial_cells(internal::face_centroids(mesh), count);
+    return internal::Spatial_cells(internal::face_centroids(mesh, m_options.threads), count);
   }
 
   template <class Pass>

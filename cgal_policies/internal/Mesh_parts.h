@@ -12,6 +12,7 @@
 #include <cgal_policies/Corner_attributes.h>
 #include <cgal_policies/internal/Spatial_cells.h>
 #include <cgal_policies/internal/clean_triangle_mesh.h>
+#include <cgal_policies/internal/for_each_in_parallel.h>
 #include <cgal_policies/internal/mesh_geometry.h>
 #include <cgal_policies/internal/part_vertex_maps.h>
 
@@ -31,33 +32,38 @@
 namespace cgal_policies {
 namespace internal {
 
-// The face centroids of `mesh` (which holds no garbage), to build the cells on and to cut by.
+// Faces to a task where the centroids and cells of every face are computed in parallel.
+constexpr std::size_t kFacesPerTask = std::size_t(1) << 16;
+
+// The face centroids of `mesh` (which holds no garbage), to build the cells on and to cut by; on
+// up to `threads` cores (0: all).
 template <class Point>
-std::vector<Eigen::Vector3d> face_centroids(const CGAL::Surface_mesh<Point>& mesh) {
-  std::vector<Eigen::Vector3d> centroids;
-  centroids.reserve(mesh.number_of_faces());
-  for (const auto f : mesh.faces()) {
+std::vector<Eigen::Vector3d> face_centroids(const CGAL::Surface_mesh<Point>& mesh,
+                                            std::size_t threads) {
+  std::vector<Eigen::Vector3d> centroids(mesh.number_of_faces());
+  for_each_in_blocks(centroids.size(), kFacesPerTask, threads, [&](std::size_t i) {
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    const typename CGAL::Surface_mesh<Point>::Face_index f(static_cast<std::uint32_t>(i));
     for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
       sum += to_eigen(mesh.point(v));
-    centroids.push_back(sum / 3);
-  }
+    centroids[i] = sum / 3;
+  });
   return centroids;
 }
 
 // The cell of every face, by its centroid.
 inline std::vector<std::uint32_t> face_cells(const std::vector<Eigen::Vector3d>& centroids,
-                                             const Spatial_cells& cells) {
+                                             const Spatial_cells& cells, std::size_t threads) {
   std::vector<std::uint32_t> cell(centroids.size());
-  for (std::size_t f = 0; f < centroids.size(); ++f)
-    cell[f] = std::uint32_t(cells.cell_of(centroids[f]));
+  for_each_in_blocks(cell.size(), kFacesPerTask, threads,
+                     [&](std::size_t f) { cell[f] = std::uint32_t(cells.cell_of(centroids[f])); });
   return cell;
 }
 
 template <class Point>
 std::vector<std::uint32_t> face_cells(const CGAL::Surface_mesh<Point>& mesh,
-                                      const Spatial_cells& cells) {
-  return face_cells(face_centroids(mesh), cells);
+                                      const Spatial_cells& cells, std::size_t threads) {
+  return face_cells(face_centroids(mesh, threads), cells, threads);
 }
 
 // The corner values and materials of face i of `to` from the corners `corners[i]` of the mesh

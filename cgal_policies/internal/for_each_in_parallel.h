@@ -82,6 +82,15 @@ void for_each_costliest_first(const std::vector<std::size_t>& costs, std::size_t
   });
 }
 
+// body(i) for every i < n as for_each_in_parallel runs them, `block` consecutive i to a task: for
+// bodies so cheap that a task each would cost more than they do.
+template <class Body>
+void for_each_in_blocks(std::size_t n, std::size_t block, std::size_t threads, const Body& body) {
+  for_each_in_parallel((n + block - 1) / block, threads, [&](std::size_t b) {
+    for (std::size_t i = b * block; i < (std::min)(n, (b + 1) * block); ++i) body(i);
+  });
+}
+
 }  // namespace internal
 }  // namespace cgal_policies
 

@@ -114,7 +114,7 @@ template <class Point, class RunPolicy>
 std::optional<Policy_outcome> run_partitioned(CGAL::Surface_mesh<Point>& mesh, std::size_t target,
                                               const Spatial_cells& cells, std::size_t threads,
                                               const RunPolicy& run_policy) {
-  const std::vector<std::uint32_t> cell = face_cells(mesh, cells);
+  const std::vector<std::uint32_t> cell = face_cells(mesh, cells, threads);
   return run_parts(
       cells.size(), mesh.number_of_faces(), mesh.number_of_vertices(), target, threads,
       [&](std::size_t c) { return mesh_part(mesh, cell, std::uint32_t(c)); }, run_policy, mesh);
@@ -157,7 +157,7 @@ Two_sided_fit_report fit_partitioned(CGAL::Surface_mesh<Point>& mesh, const Spat
                                      std::size_t threads, const Two_sided_fit_options& options,
                                      const InputPart& input_part) {
   using Mesh = CGAL::Surface_mesh<Point>;
-  const std::vector<std::uint32_t> output_cell = face_cells(mesh, cells);
+  const std::vector<std::uint32_t> output_cell = face_cells(mesh, cells, threads);
   std::vector<std::size_t> faces_in(cells.size(), 0);
   for (const std::uint32_t c : output_cell) ++faces_in[c];
   std::vector<Mesh> parts(cells.size());
@@ -209,10 +209,10 @@ Two_sided_fit_report fit_by_cells(CGAL::Surface_mesh<Point>& mesh,
                                   const CGAL::Surface_mesh<Point>& input,
                                   const Spatial_cells& cells, std::size_t threads,
                                   const Two_sided_fit_options& fit) {
-  const std::vector<Eigen::Vector3d> centroids = face_centroids(input);
+  const std::vector<Eigen::Vector3d> centroids = face_centroids(input, threads);
   const Spatial_cells shifted = shifted_cells(centroids, cells);
   return fit_by_cells(mesh, cells, shifted, threads, fit, [&](const Spatial_cells& by) {
-    return [&input, cell = face_cells(centroids, by)](std::size_t c) {
+    return [&input, cell = face_cells(centroids, by, threads)](std::size_t c) {
       return mesh_part(input, cell, std::uint32_t(c), false);
     };
   });

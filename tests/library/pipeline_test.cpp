@@ -674,8 +674,8 @@ TEST(MeshParts, StitchingTheCutPartsGivesTheMeshBack) {
         return std::array<double, 2>{p.x() + double(f) / 1000, p.y()};
       },
       true);
-  const internal::Spatial_cells cells(internal::face_centroids(sphere), 8);
-  const std::vector<std::uint32_t> cell = internal::face_cells(sphere, cells);
+  const internal::Spatial_cells cells(internal::face_centroids(sphere, 1), 8);
+  const std::vector<std::uint32_t> cell = internal::face_cells(sphere, cells, 1);
   std::vector<Mesh> parts;
   std::size_t locked = 0, faces = 0;
   for (std::uint32_t c = 0; c < cells.size(); ++c) {
@@ -735,8 +735,8 @@ TEST(PartitionedRun, AsksEachPartForItsShareBesideItsLockedVertices) {
 TEST(PartitionedRun, CollapsesAnEdgeOfZeroLengthOnACutBeforeCutting) {
   namespace internal = cgal_policies::internal;
   const auto on_cut = [](const Mesh& mesh, Mesh::Vertex_index v) {
-    const internal::Spatial_cells cells(internal::face_centroids(mesh), 2);
-    const std::vector<std::uint32_t> cell = internal::face_cells(mesh, cells);
+    const internal::Spatial_cells cells(internal::face_centroids(mesh, 1), 2);
+    const std::vector<std::uint32_t> cell = internal::face_cells(mesh, cells, 1);
     std::set<std::uint32_t> seen;
     for (const auto f : CGAL::faces_around_target(mesh.halfedge(v), mesh))
       seen.insert(cell[std::size_t(f)]);
@@ -1118,8 +1118,8 @@ Mesh painted_sphere() {
 TEST(PartitionedJob, ReadsAPartBackAsItWasHeld) {
   namespace internal = cgal_policies::internal;
   const Mesh sphere = painted_sphere();
-  const internal::Spatial_cells cells(internal::face_centroids(sphere), 4);
-  const Mesh part = internal::mesh_part(sphere, internal::face_cells(sphere, cells), 1);
+  const internal::Spatial_cells cells(internal::face_centroids(sphere, 1), 4);
+  const Mesh part = internal::mesh_part(sphere, internal::face_cells(sphere, cells, 1), 1);
   const Job_folder folder("raw");
   internal::write_raw_mesh(part, folder.path() / "part");
   const Mesh back = internal::read_raw_mesh<Point>(folder.path() / "part");
