@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bitset>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -105,11 +106,20 @@ CGAL::Surface_mesh<Point> mesh_part(const CGAL::Surface_mesh<Point>& mesh,
   };
   // The corner h (target v) belongs to the fan of v's faces in the cell that starts at the
   // returned corner: the first one going clockwise, or halfedge(v) when the fan is v's whole star.
+  // Most vertices lie inside a cell: whether v's whole star is in it is found once per vertex.
+  enum : std::uint8_t { unknown, whole_star, cut_star };
+  std::vector<std::uint8_t> star(mesh.num_vertices(), unknown);
   const auto fan_start = [&](Halfedge h) {
+    std::uint8_t& state = star[std::size_t(mesh.target(h))];
+    if (state == unknown) {
+      state = whole_star;
+      for (const Halfedge g : CGAL::halfedges_around_target(h, mesh))
+        if (!in_cell(g)) state = cut_star;
+    }
+    if (state == whole_star) return mesh.halfedge(mesh.target(h));
     for (Halfedge g = h;;) {
       const Halfedge before = mesh.prev(mesh.opposite(g));
       if (!in_cell(before)) return g;
-      if (before == h) return mesh.halfedge(mesh.target(h));
       g = before;
     }
   };
@@ -118,10 +128,12 @@ CGAL::Surface_mesh<Point> mesh_part(const CGAL::Surface_mesh<Point>& mesh,
       if (!mesh.is_border(h) && cell[std::size_t(mesh.face(h))] != c) return true;
     return false;
   };
-  // Part vertices by their fan's first corner, in the order the faces reach them.
-  std::vector<std::pair<Halfedge, std::uint32_t>> fans;
+  // Part vertices by their fan's first corner, in the order of those corners' indices: a bit per
+  // halfedge of `mesh` marks the first corners, and a vertex's number is the count of marks
+  // before its corner's.
   std::vector<std::array<Halfedge, 3>> corners;
   std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::vector<std::uint64_t> is_start((mesh.num_halfedges() + 63) / 64, 0);
   for (const auto f : mesh.faces()) {
     if (cell[std::size_t(f)] != c) continue;
     std::array<Halfedge, 3> face_corners;
@@ -129,25 +141,32 @@ CGAL::Surface_mesh<Point> mesh_part(const CGAL::Surface_mesh<Point>& mesh,
     int k = 0;
     for (const Halfedge h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
       face_corners[k] = h;
-      t[k++] = std::uint32_t(std::size_t(fan_start(h)));
+      t[k] = std::uint32_t(std::size_t(fan_start(h)));
+      is_start[t[k] / 64] |= std::uint64_t(1) << (t[k] % 64);
+      ++k;
     }
     corners.push_back(face_corners);
     triangles.push_back(t);
   }
   std::vector<std::uint32_t> starts;
-  for (const auto& t : triangles) starts.insert(starts.end(), t.begin(), t.end());
-  std::sort(starts.begin(), starts.end());
-  starts.erase(std::unique(starts.begin(), starts.end()), starts.end());
-
+  std::vector<std::uint32_t> starts_before(is_start.size());
+  for (std::size_t w = 0; w < is_start.size(); ++w) {
+    starts_before[w] = std::uint32_t(starts.size());
+    for (std::uint64_t bits = is_start[w]; bits != 0; bits &= bits - 1)
+      starts.push_back(std::uint32_t(64 * w + std::bitset<64>(~bits & (bits - 1)).count()));
+  }
   std::vector<Point> points;
+  points.reserve(starts.size());
   for (const std::uint32_t start : starts)
     points.push_back(mesh.point(mesh.target(Halfedge(start))));
   std::vector<std::size_t> triangle_points;
   triangle_points.reserve(3 * triangles.size());
   for (const auto& t : triangles)
-    for (const std::uint32_t start : t)
-      triangle_points.push_back(
-          std::size_t(std::lower_bound(starts.begin(), starts.end(), start) - starts.begin()));
+    for (const std::uint32_t start : t) {
+      const std::uint64_t below = (std::uint64_t(1) << (start % 64)) - 1;
+      triangle_points.push_back(starts_before[start / 64] +
+                                std::bitset<64>(is_start[start / 64] & below).count());
+    }
   Mesh part;
   std::size_t unused_points = 0;
   // Each fan is a vertex of its own, so the part is a clean mesh whenever `mesh` is one.
