@@ -22,6 +22,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -100,11 +101,16 @@ Python_mesh read(const std::filesystem::path& path) {
 }
 
 // A texture the file is written without is a UserWarning, as simplify prints it on stderr.
-void write(const Python_mesh& mesh, const std::filesystem::path& path) {
+void write(const Python_mesh& mesh, const std::filesystem::path& path,
+           const std::string& gltf_encoding) {
+  const std::optional<io::Gltf_encoding> encoding = io::gltf_encoding_named(gltf_encoding);
+  if (!encoding) throw py::value_error("gltf_encoding must be float, quantized or meshopt");
+  if (*encoding != io::Gltf_encoding::float32 && !io::is_gltf_file(path.string()))
+    throw py::value_error(path.string() + ": gltf_encoding needs a .gltf or .glb path");
   std::vector<std::string> left_out;
   {
     py::gil_scoped_release released;
-    left_out = io::write_mesh_atomically(mesh.mesh, path.string(), mesh.references);
+    left_out = io::write_mesh_atomically(mesh.mesh, path.string(), mesh.references, *encoding);
   }
   for (const std::string& line : left_out)
     if (PyErr_WarnEx(PyExc_UserWarning, line.c_str(), 1) != 0) throw py::error_already_set();
@@ -289,11 +295,15 @@ Reads a triangle mesh (.obj .off .ply .stl .gltf .glb) with its texture coordina
 colours and materials, polygons triangulated and soups repaired as the tools do (see
 Mesh.repairs). ValueError with the reader's message when it cannot.
 )doc");
-  m.def("write", &python::write, py::arg("mesh"), py::arg("path"), R"doc(
+  m.def("write", &python::write, py::arg("mesh"), py::arg("path"), py::kw_only(),
+        py::arg("gltf_encoding") = "float", R"doc(
 Writes a mesh by its extension (.obj .off .ply .stl .gltf .glb), all or nothing: an OBJ, PLY or
 glTF file keeps the corner attributes with their seams, an OBJ or glTF file the materials, a
 glTF file an OBJ material's texture image (a UserWarning for one that cannot be read; the file
 is written without it). OSError when the file cannot be written; nothing is left behind then.
+gltf_encoding, for a glTF file, as simplify's --gltf-encoding: "float", "quantized"
+(KHR_mesh_quantization) or "meshopt" (quantized, then EXT_meshopt_compression); ValueError for
+another name or another kind of file.
 )doc");
   m.def("measure", &python::measure, py::arg("a"), py::arg("b"), py::kw_only(),
         py::arg("samples") = apps::kDefaultErrorSamples, R"doc(

@@ -18,9 +18,7 @@ namespace {
 std::optional<Gltf_encoding> take_gltf_encoding(Command_line& cli) {
   const std::optional<std::string> name = cli.take_value("gltf-encoding");
   if (!name) return std::nullopt;
-  if (*name == "float") return Gltf_encoding::float32;
-  if (*name == "quantized") return Gltf_encoding::quantized;
-  if (*name == "meshopt") return Gltf_encoding::meshopt;
+  if (const std::optional<Gltf_encoding> encoding = gltf_encoding_named(*name)) return encoding;
   throw App_error(exit_usage, "--gltf-encoding must be float, quantized or meshopt");
 }
 

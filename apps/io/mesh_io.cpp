@@ -306,6 +306,13 @@ std::vector<std::string> write_mesh_atomically(const Mesh& mesh, const std::stri
 
 bool is_gltf_file(const std::string& path) { return is_gltf(lower_extension(path)); }
 
+std::optional<Gltf_encoding> gltf_encoding_named(const std::string& name) {
+  if (name == "float") return Gltf_encoding::float32;
+  if (name == "quantized") return Gltf_encoding::quantized;
+  if (name == "meshopt") return Gltf_encoding::meshopt;
+  return std::nullopt;
+}
+
 bool holds_lod_chain(const std::string& path) { return is_gltf_file(path); }
 
 std::vector<std::string> lod_level_paths(const std::string& path, std::size_t levels) {

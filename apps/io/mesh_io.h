@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,10 @@ Mesh triangle_mesh_from_soup(const std::string& source, std::vector<Point>& poin
 // (KHR_mesh_quantization); or quantized, then compressed by meshoptimizer
 // (EXT_meshopt_compression). Other formats have one way each.
 enum class Gltf_encoding { float32, quantized, meshopt };
+
+// The encoding of one of the names "float", "quantized" and "meshopt" (simplify's
+// --gltf-encoding, the Python module's write); nothing for another name.
+std::optional<Gltf_encoding> gltf_encoding_named(const std::string& name);
 
 // Writes by extension with full precision, all or nothing (write_atomically); throws
 // Io_error (unwritable output) and leaves no file behind when that fails. An OBJ file gets the

@@ -1,4 +1,7 @@
 """Mesh: arrays in and out, the corner attributes through files, and bad input."""
+import json
+import struct
+
 import numpy as np
 import pytest
 
@@ -49,6 +52,38 @@ def test_a_textured_round_trip_keeps_the_attributes(tmp_path, data, name):
         assert back.material_names == spot.material_names
         assert np.array_equal(back.materials, spot.materials)
 
+
+
+def glb_json(path):
+    """The JSON chunk of a .glb file: after the 12-byte header, its length, its type, then it."""
+    data = path.read_bytes()
+    length, kind = struct.unpack_from("<II", data, 12)
+    assert kind == 0x4E4F534A  # b"JSON" as a little-endian number
+    return json.loads(data[20:20 + length])
+
+
+@pytest.mark.parametrize("encoding, required", [
+    ("quantized", ["KHR_mesh_quantization"]),
+    ("meshopt", ["KHR_mesh_quantization", "EXT_meshopt_compression"])])
+def test_a_gltf_is_written_quantized_or_compressed_on_request(tmp_path, encoding, required):
+    vertices, faces = TETRAHEDRON
+    uv = np.arange(24, dtype=float).reshape(4, 3, 2) / 24
+    out = tmp_path / "tetrahedron.glb"
+    cp.write(cp.Mesh(vertices, faces, uv=uv), out, gltf_encoding=encoding)
+    assert glb_json(out)["extensionsRequired"] == required
+    back = cp.read(out)
+    # Within a step of the 16-bit grids over the unit box and over the texture.
+    assert np.allclose(back.vertices[back.faces], vertices[faces], rtol=0, atol=1 / 65535)
+    assert np.allclose(back.uv, uv, rtol=0, atol=1 / 65535)
+
+
+def test_a_gltf_encoding_is_one_of_three_and_for_gltf_only(tmp_path):
+    mesh = cp.Mesh(*TETRAHEDRON)
+    with pytest.raises(ValueError, match="gltf_encoding must be float, quantized or meshopt"):
+        cp.write(mesh, tmp_path / "out.glb", gltf_encoding="draco")
+    with pytest.raises(ValueError, match=r"out\.obj: gltf_encoding needs a \.gltf or \.glb"):
+        cp.write(mesh, tmp_path / "out.obj", gltf_encoding="quantized")
+    assert list(tmp_path.iterdir()) == []
 
 def test_simplify_carries_the_texture_with_its_seams(tmp_path, data):
     spot = cp.read(data / "spot.obj")
