@@ -114,7 +114,10 @@ CGAL::Surface_mesh<Point> mesh_part(const CGAL::Surface_mesh<Point>& mesh,
     if (state == unknown) {
       state = whole_star;
       for (const Halfedge g : CGAL::halfedges_around_target(h, mesh))
-        if (!in_cell(g)) state = cut_star;
+        if (!in_cell(g)) {
+          state = cut_star;
+          break;
+        }
     }
     if (state == whole_star) return mesh.halfedge(mesh.target(h));
     for (Halfedge g = h;;) {
@@ -123,7 +126,9 @@ CGAL::Surface_mesh<Point> mesh_part(const CGAL::Surface_mesh<Point>& mesh,
       g = before;
     }
   };
+  // Asked of each part vertex's origin after the cut, when its star's state is known.
   const auto locked = [&](typename Mesh::Vertex_index v) {
+    if (star[std::size_t(v)] == whole_star) return false;
     for (const Halfedge h : CGAL::halfedges_around_target(v, mesh))
       if (!mesh.is_border(h) && cell[std::size_t(mesh.face(h))] != c) return true;
     return false;

@@ -53,7 +53,6 @@ def test_a_textured_round_trip_keeps_the_attributes(tmp_path, data, name):
         assert np.array_equal(back.materials, spot.materials)
 
 
-
 def glb_json(path):
     """The JSON chunk of a .glb file: after the 12-byte header, its length, its type, then it."""
     data = path.read_bytes()
@@ -84,6 +83,7 @@ def test_a_gltf_encoding_is_one_of_three_and_for_gltf_only(tmp_path):
     with pytest.raises(ValueError, match=r"out\.obj: gltf_encoding needs a \.gltf or \.glb"):
         cp.write(mesh, tmp_path / "out.obj", gltf_encoding="quantized")
     assert list(tmp_path.iterdir()) == []
+
 
 def test_simplify_carries_the_texture_with_its_seams(tmp_path, data):
     spot = cp.read(data / "spot.obj")
