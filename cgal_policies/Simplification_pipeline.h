@@ -33,7 +33,7 @@
 #include <cgal_policies/Simplification_report.h>
 #include <cgal_policies/internal/Part_progress.h>
 #include <cgal_policies/internal/Partitioned_job_files.h>
-#include <cgal_policies/internal/Streamed_cut.h>
+#include <cgal_policies/internal/Spilled_input.h>
 #include <cgal_policies/internal/fit_carrying_corner_values.h>
 #include <cgal_policies/internal/raw_mesh_file.h>
 #include <cgal_policies/internal/run_cgal_policies.h>
@@ -129,45 +129,33 @@ class Simplification_pipeline {
   // reading.
   template <class Source>
   Simplification_report run_streamed(const Source& source, Mesh& mesh) const {
-    CGAL_precondition(m_options.two_sided_bound() == 0 && !m_options.on_collapse);
-    CGAL_precondition(m_options.merge_distance == 0 && m_options.min_component <= 1);
-    CGAL_precondition(!m_options.smoothing.bounded);
-    Simplification_report report;
+    check_streamed_options();
     mesh.clear();
     const auto start = std::chrono::steady_clock::now();
-    const internal::Streamed_input<Point> input = internal::read_streamed_input<Point>(source);
-    report.input_faces = input.faces;
-    report.input_vertices = input.points.size();
-    report.target_faces = m_options.target.of(report.input_faces);
-    const internal::Spatial_cells cells(input.sample, m_options.cell_count(input.faces));
-    report.parts = cells.size();
-    internal::Spill_files spills(cells.size());
-    const std::vector<std::uint32_t> vertex_cell =
-        internal::cut_into_spills(source, input, cells, spills);
-    const auto input_parts = [&](const internal::Spill_files& files) {
-      return [&input, &vertex_cell, spilled = &files](std::size_t c) {
-        return internal::streamed_part(input.points, vertex_cell, spilled->read(c));
-      };
-    };
-    const double diagonal =
-        internal::diagonal_length(CGAL::bbox_3(input.points.begin(), input.points.end()));
-    internal::Part_progress progress(m_options.progress, input.faces, report.target_faces);
+    const internal::Spilled_input<Point> input(source, cell_counter());
+    Simplification_report report = streamed_report(input);
+    internal::Part_progress progress(m_options.progress, input.faces(), report.target_faces);
     const std::optional<Mesh> input_as_cut;  // none: no bound out of core
     const std::optional<internal::Policy_outcome> outcome = internal::run_parts(
-        cells.size(), input.faces, input.points.size(), report.target_faces, m_options.threads,
-        input_parts(spills), part_or_stitched_runner(mesh, input_as_cut, diagonal, progress), mesh);
+        report.parts, input.faces(), input.vertices(), report.target_faces, m_options.threads,
+        parts_of(input, input.spills()),
+        part_or_stitched_runner(mesh, input_as_cut, input.diagonal(), progress), mesh);
     if (!outcome) throw std::logic_error("a part lost a vertex of its cut");
     report.stop_reason = outcome->stop_reason;
     report.pass_seconds[std::size_t(Simplification_pass::simplification)] = seconds_since(start);
     finish(report, mesh, Mesh(), [&](const Two_sided_fit_options& fit) {
-      const internal::Spatial_cells shifted = internal::shifted_cells(input.sample, cells);
+      // One cell is the whole input: fitted whole, as run() fits a mesh it did not cut.
+      if (report.parts == 1)
+        return internal::fit_carrying_corner_values(mesh, input.part(input.spills(), 0), fit);
+      const internal::Spatial_cells shifted = input.shifted_cells();
       std::optional<internal::Spill_files> shifted_spills;
-      return internal::fit_by_cells(
-          mesh, cells, shifted, m_options.threads, fit, [&](const internal::Spatial_cells& by) {
-            if (&by == &cells) return input_parts(spills);
-            internal::spill_again(input, spills, shifted, shifted_spills.emplace(cells.size()));
-            return input_parts(*shifted_spills);
-          });
+      const auto input_parts = [&](const internal::Spatial_cells& by) {
+        if (&by == &input.cells()) return parts_of(input, input.spills());
+        input.spill_shifted(shifted, shifted_spills.emplace(report.parts));
+        return parts_of(input, *shifted_spills);
+      };
+      return internal::fit_by_cells(mesh, input.cells(), shifted, m_options.threads, fit,
+                                    input_parts);
     });
     return report;
   }
@@ -175,7 +163,7 @@ class Simplification_pipeline {
   // A partitioned run as tasks that hand their work on through files in `folder` (empty, and seen
   // by every task), so that a task scheduler (Dask, Ray) may run them in other processes or on
   // other machines (docs/scale.md). The job runs in stages, each a task per part and a stitch:
-  //   const std::size_t parts = pipeline.cut(mesh, folder);
+  //   const std::size_t parts = pipeline.cut(mesh, folder);  // or cut_streamed(source, folder)
   //   for (int stage = 0;; ++stage) {
   //     for (std::size_t c = 0; c < parts; ++c) pipeline.run_part(folder, stage, c);  // anywhere
   //     if (!pipeline.stitch(folder, stage)) break;
@@ -232,6 +220,46 @@ class Simplification_pipeline {
     }
     job.report.pass_seconds[std::size_t(Simplification_pass::simplification)] =
         seconds_since(start) - job.report.total_seconds();
+    internal::write_job_header(folder, job);
+    return job.report.parts;
+  }
+
+  // cut() for a mesh too large to hold whole, read from `source` in passes as run_streamed reads
+  // it: the parts of every stage are written from the triangles spilled by cell, one part per
+  // thread at a time, never from the whole. run_streamed's preconditions; the job's result is
+  // run_streamed's, byte for byte. Returns the number of parts: 0, nothing written, for a source
+  // without a face.
+  template <class Source>
+  std::size_t cut_streamed(const Source& source, const std::filesystem::path& folder) const {
+    check_streamed_options();
+    const auto start = std::chrono::steady_clock::now();
+    const internal::Spilled_input<Point> input(source, cell_counter());
+    if (input.faces() == 0) return 0;
+    internal::Job_header job;
+    job.report = streamed_report(input);
+    job.partitioned = true;
+    job.cells = input.cells().splits();
+    job.whole_diagonal = input.diagonal();
+    job.whole_faces = input.faces();
+    job.whole_vertices = input.vertices();
+    // Each cell's part, for stage 0 and, as the input near the cell, for the fit's first half.
+    internal::for_each_in_parallel(job.report.parts, m_options.threads, [&](std::size_t c) {
+      const Mesh part = input.part(input.spills(), c);
+      internal::write_raw_mesh(part, internal::part_file(folder, 0, c));
+      if (m_options.fit) internal::write_raw_mesh(part, internal::near_part_file(folder, 1, c));
+    });
+    if (m_options.fit) {
+      const internal::Spatial_cells shifted = input.shifted_cells();
+      job.shifted_cells = shifted.splits();
+      internal::Spill_files shifted_spills(shifted.size());
+      input.spill_shifted(shifted, shifted_spills);
+      internal::for_each_in_parallel(shifted.size(), m_options.threads, [&](std::size_t c) {
+        internal::write_raw_mesh(input.part(shifted_spills, c),
+                                 internal::near_part_file(folder, 2, c));
+      });
+    }
+    job.report.pass_seconds[std::size_t(Simplification_pass::simplification)] =
+        seconds_since(start);
     internal::write_job_header(folder, job);
     return job.report.parts;
   }
@@ -360,6 +388,33 @@ class Simplification_pipeline {
  private:
   // Whether a pass after the policy measures against the input.
   bool needs_input() const { return m_options.fit || m_options.smoothing.bounded; }
+
+  // What a run that never holds the input whole cannot do.
+  void check_streamed_options() const {
+    CGAL_precondition(m_options.two_sided_bound() == 0 && !m_options.on_collapse);
+    CGAL_precondition(m_options.merge_distance == 0 && m_options.min_component <= 1);
+    CGAL_precondition(!m_options.smoothing.bounded);
+  }
+
+  // The number of cells for an input of so many faces, as Spilled_input asks it.
+  auto cell_counter() const {
+    return [this](std::size_t faces) { return m_options.cell_count(faces); };
+  }
+
+  Simplification_report streamed_report(const internal::Spilled_input<Point>& input) const {
+    Simplification_report report;
+    report.input_faces = input.faces();
+    report.input_vertices = input.vertices();
+    report.target_faces = m_options.target.of(report.input_faces);
+    report.parts = input.cells().size();
+    return report;
+  }
+
+  // The input parts of the cells spilled in `spills`, by cell.
+  static auto parts_of(const internal::Spilled_input<Point>& input,
+                       const internal::Spill_files& spills) {
+    return [&input, &spills](std::size_t c) { return input.part(spills, c); };
+  }
 
   // Whether a partitioned run keeps the mesh it cuts for its last pass: a two-sided bound is
   // certified against it, not against the stitched parts, which are within the bound of it

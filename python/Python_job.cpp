@@ -2,6 +2,8 @@
 
 #include "simplify_report.h"
 
+#include "cli/out_of_core_run.h"
+#include "io/Streamed_mesh_file.h"
 #include "pipeline/Pipeline.h"
 
 namespace cgal_policies {
@@ -15,6 +17,16 @@ std::size_t Python_job::cut(const Python_mesh& mesh) const {
   return apps::Pipeline(m_request.options).cut(copy, m_folder);
 }
 
+std::size_t Python_job::cut_file(const std::filesystem::path& path) const {
+  if (!apps::runs_out_of_core(m_request.options))
+    throw py::value_error(
+        "a mesh file is cut in passes, never held whole, which max_error, the hausdorff policy, "
+        "merge_distance, min_component and smooth_bounded need");
+  py::gil_scoped_release released;
+  return apps::cut_out_of_core(apps::Pipeline(m_request.options),
+                               io::Streamed_mesh_file(path.string()), path.string(), m_folder);
+}
+
 void Python_job::run_part(int stage, std::size_t c) const {
   py::gil_scoped_release released;
   apps::Pipeline(m_request.options).run_part(m_folder, stage, c);
@@ -25,17 +37,20 @@ bool Python_job::stitch(int stage) const {
   return apps::Pipeline(m_request.options).stitch(m_folder, stage);
 }
 
-std::pair<Python_mesh, py::dict> Python_job::result(const Python_mesh& input) const {
+std::pair<Python_mesh, py::dict> Python_job::result(const Python_mesh* input) const {
   Python_mesh output;
   Simplification_report run;
   {
     py::gil_scoped_release released;
     run = apps::Pipeline(m_request.options).result(m_folder, output.mesh);
   }
-  output.references = input.references;
-  output.repairs = input.repairs;
-  const bool had_corner_values = Corner_attributes<io::Point>(input.mesh).any_corner_values();
-  py::dict report = simplify_report(m_request, run, input.repairs, had_corner_values);
+  bool had_corner_values = false;
+  if (input) {
+    output.references = input->references;
+    output.repairs = input->repairs;
+    had_corner_values = Corner_attributes<io::Point>(input->mesh).any_corner_values();
+  }
+  py::dict report = simplify_report(m_request, run, output.repairs, had_corner_values);
   return {std::move(output), std::move(report)};
 }
 

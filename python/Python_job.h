@@ -23,12 +23,15 @@ class Python_job {
 
   // Runs the repairs on a copy of `mesh` and cuts it into parts in the folder; their number.
   std::size_t cut(const Python_mesh& mesh) const;
+  // Cuts the mesh file at `path` (binary PLY or OBJ) read in passes, never whole, as
+  // `simplify --out-of-core` reads it; ValueError for the options that need the whole input.
+  std::size_t cut_file(const std::filesystem::path& path) const;
   void run_part(int stage, std::size_t c) const;
   // True when another stage follows.
   bool stitch(int stage) const;
   // The output and simplify()'s report, `input` being the mesh given to cut(): its materials and
-  // its repairs are the output's.
-  std::pair<Python_mesh, py::dict> result(const Python_mesh& input) const;
+  // its repairs are the output's; none after cut_file().
+  std::pair<Python_mesh, py::dict> result(const Python_mesh* input) const;
 
  private:
   std::filesystem::path m_folder;

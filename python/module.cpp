@@ -283,12 +283,16 @@ Dask cluster.
            "The job in `folder` (an empty folder) with simplify()'s options; ValueError as it.")
       .def("cut", &python::Python_job::cut, py::arg("mesh"),
            "Runs the repairs on a copy of `mesh`, cuts it into parts; returns their number.")
+      .def("cut_file", &python::Python_job::cut_file, py::arg("path"),
+           "Cuts the mesh file at `path` (binary PLY or OBJ) as cut() cuts a mesh, reading it in "
+           "passes, never whole (points and triangles only); returns the number of parts.")
       .def("run_part", &python::Python_job::run_part, py::arg("stage"), py::arg("c"),
            "Runs part c of the stage: the policy on it (stage 0), or a half of the fit.")
       .def("stitch", &python::Python_job::stitch, py::arg("stage"),
            "Stitches the stage's parts; True when another stage follows.")
-      .def("result", &python::Python_job::result, py::arg("mesh"),
-           "(mesh, report) as simplify(mesh) gives them; `mesh` the one given to cut().");
+      .def("result", &python::Python_job::result, py::arg("mesh") = nullptr,
+           "(mesh, report) as simplify(mesh) gives them; `mesh` the one given to cut(), None "
+           "after cut_file().");
 
   m.def("read", &python::read, py::arg("path"), R"doc(
 Reads a triangle mesh (.obj .off .ply .stl .gltf .glb) with its texture coordinates, normals,

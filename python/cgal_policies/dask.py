@@ -6,7 +6,9 @@ when the run fits its output, two more stages of a task per part and a stitch ru
 of the fit by cells. The output comes back here. The tasks hand their work on as files in a
 folder under `shared`, a path that the workers and this process all see (a network file system
 across machines; the local temporary folder for a LocalCluster), removed afterwards. The result
-is simplify()'s with the same options and parts, byte for byte once written.
+is simplify()'s with the same options and parts, byte for byte once written. A mesh file given by
+its path (binary PLY or OBJ) is cut while it is read in passes, never whole, and the result is
+then `simplify --out-of-core`'s.
 
     from distributed import Client, LocalCluster
     import cgal_policies, cgal_policies.dask
@@ -17,10 +19,11 @@ is simplify()'s with the same options and parts, byte for byte once written.
 """
 
 import itertools
+import os
 import shutil
 import tempfile
 
-from ._cgal_policies import Mesh, PartitionedJob
+from ._cgal_policies import PartitionedJob
 
 
 def _run_part(folder, options, stage, c):
@@ -31,18 +34,22 @@ def _stitch(folder, options, stage, parts_done):
     return PartitionedJob(folder, **options).stitch(stage)
 
 
-def simplify(client, mesh: Mesh, *, shared=None, **options):
+def simplify(client, mesh, *, shared=None, **options):
     """Simplifies `mesh` as cgal_policies.simplify(mesh, **options) does, its parts as tasks of
-    the Dask `client` (a distributed.Client). `options` are simplify()'s but progress; `parts`
-    sets the cut (0, the default: one part per 500,000 faces, and one part, run whole, for a
-    smaller mesh). Returns (mesh, report) as simplify() does. ValueError for a bad option before
-    any task starts; a task's error is raised here, and the job's files are removed all the same.
+    the Dask `client` (a distributed.Client). `mesh` is a Mesh, or the path of a mesh file too
+    large to read whole (its points and triangles only; the options that need the whole input,
+    such as max_error, are refused). `options` are simplify()'s but progress; `parts` sets the cut
+    (0, the default: one part per 500,000 faces, and one part, run whole, for a smaller mesh).
+    Returns (mesh, report) as simplify() does. ValueError for a bad option or an unreadable file
+    before any task starts; a task's error is raised here, and the job's files are removed all
+    the same.
     """
     folder = tempfile.mkdtemp(prefix="cgal_policies_job_", dir=shared)
     futures = []
     try:
         job = PartitionedJob(folder, **options)
-        parts = job.cut(mesh)
+        from_file = isinstance(mesh, (str, os.PathLike))
+        parts = job.cut_file(mesh) if from_file else job.cut(mesh)
         # pure=False: two jobs never share a task, whatever their arguments.
         for stage in itertools.count():
             done = [client.submit(_run_part, folder, options, stage, c, pure=False)
@@ -51,7 +58,7 @@ def simplify(client, mesh: Mesh, *, shared=None, **options):
             futures = done + [stitched]
             if not stitched.result():
                 break
-        return job.result(mesh)
+        return job.result(None if from_file else mesh)
     finally:
         client.cancel(futures)
         shutil.rmtree(folder, ignore_errors=True)

@@ -3,7 +3,7 @@ import pytest
 
 import cgal_policies as cp
 import cgal_policies.dask
-from test_simplify import NOT_OF_THE_RUN
+from test_simplify import NOT_OF_THE_RUN, same_report, tool_run
 
 distributed = pytest.importorskip("distributed")
 # Debian's tornado 6.2 under distributed 2022.12 warns of its own event loop handling.
@@ -61,4 +61,24 @@ def test_a_failing_task_is_raised_and_leaves_no_file(client, tmp_path, data, mon
     monkeypatch.setattr(cp.dask, "_run_part", failing_part)
     with pytest.raises(OSError, match="the shared folder is gone"):
         cp.dask.simplify(client, cp.read(data / "bunny.obj"), shared=tmp_path, parts=2, ratio=0.1)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_file_cut_in_passes_gives_the_bytes_of_simplify_out_of_core(client, tmp_path, data):
+    """The bunny by its path: the cut reads it in passes, the tasks fit by cells."""
+    expected, tool_report = tool_run(tmp_path, data / "bunny.obj", "tool.ply", "0.05",
+                                     "--parts", "4", "--out-of-core")
+    shared = tmp_path / "shared"
+    shared.mkdir()
+    out, report = cp.dask.simplify(client, data / "bunny.obj", shared=shared, parts=4, ratio=0.05)
+    cp.write(out, tmp_path / "dask.ply")
+    assert (tmp_path / "dask.ply").read_bytes() == expected
+    same_report(report, tool_report, [])
+    assert report["parts"] == 4 and report["fit"]
+    assert list(shared.iterdir()) == []
+
+
+def test_a_file_is_not_cut_for_an_option_that_needs_it_whole(client, tmp_path, data):
+    with pytest.raises(ValueError, match=r"^a mesh file is cut in passes, never held whole, "):
+        cp.dask.simplify(client, data / "bunny.obj", shared=tmp_path, ratio=0.05, max_error=0.01)
     assert list(tmp_path.iterdir()) == []

@@ -51,6 +51,7 @@ using namespace test_meshes;
 using pipeline_runs::policy_alone;
 using pipeline_runs::policy_names;
 using pipeline_runs::run_as_job;
+using pipeline_runs::run_job_stages;
 using pipeline_runs::simplify;
 
 // A gtest parameter name: letters, digits and underscores only.
@@ -1194,6 +1195,56 @@ TEST(PartitionedJob, GivesTheBytesOfTheRunInMemory) {
     EXPECT_TRUE(written_bytes(mesh, "job") == written_bytes(in_memory, "in_memory"))
         << "the job and the run in memory wrote different files";
   }
+}
+
+// A job cut from a stream gives the streamed run's bytes and report: in four parts with the fit
+// (three stages) and without, and in one part with the fit (fitted whole); the cut leaves no spill
+// file. A source without a face is no part and no file.
+TEST(PartitionedJob, CutFromAStreamGivesTheBytesOfTheStreamedRun) {
+  SKIP_IF_TOO_SLOW_WHEN_SANITIZED();
+  const Vector_source source = source_of(loop_sphere(4));
+  const Job_folder jobs("streamed");  // before TMPDIR moves: the spills' folder stays apart
+  const Temporary_folder spills;
+  struct Case {
+    std::string policy;
+    bool fit;
+    std::size_t parts;
+    int stages;
+  };
+  for (const Case& c :
+       {Case{"flat-lt", true, 4, 3}, Case{"fast", false, 4, 1}, Case{"lt", true, 1, 1}}) {
+    SCOPED_TRACE(c.policy + (c.fit ? " + fit" : "") + " on " + std::to_string(c.parts));
+    cgal_policies::Simplification_options options = policy_alone(c.policy, 600);
+    options.fit = c.fit;
+    options.parts = c.parts;
+    const apps::Pipeline pipeline(options);
+    Mesh streamed;
+    const cgal_policies::Simplification_report expected = pipeline.run_streamed(source, streamed);
+    const std::filesystem::path folder = jobs.path() / c.policy;
+    std::filesystem::create_directory(folder);
+    const std::size_t parts = pipeline.cut_streamed(source, folder);
+    EXPECT_EQ(parts, c.parts);
+    EXPECT_TRUE(spills.empty());
+    Mesh mesh;
+    cgal_policies::Simplification_report report;
+    EXPECT_EQ(run_job_stages(pipeline, parts, folder, mesh, report), c.stages);
+    EXPECT_EQ(report.parts, expected.parts);
+    EXPECT_EQ(report.input_faces, expected.input_faces);
+    EXPECT_EQ(report.input_vertices, expected.input_vertices);
+    EXPECT_EQ(report.output_faces, expected.output_faces);
+    EXPECT_EQ(report.stop_reason, expected.stop_reason);
+    EXPECT_EQ(report.fitted, c.fit);
+    EXPECT_EQ(report.fit.rounds, expected.fit.rounds);
+    EXPECT_EQ(report.fit.moves, expected.fit.moves);
+    EXPECT_EQ(report.fit.flips, expected.fit.flips);
+    EXPECT_TRUE(written_bytes(mesh, "streamed_job") == written_bytes(streamed, "streamed_run"))
+        << "the job and the streamed run wrote different files";
+  }
+  const std::filesystem::path empty = jobs.path() / "empty";
+  std::filesystem::create_directory(empty);
+  EXPECT_EQ(apps::Pipeline(policy_alone("fast", 600)).cut_streamed(Vector_source(), empty), 0u);
+  EXPECT_TRUE(std::filesystem::is_empty(empty));
+  EXPECT_TRUE(spills.empty());
 }
 
 TEST(PartitionedJob, ADamagedFileIsAnErrorNamingIt) {

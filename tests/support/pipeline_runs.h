@@ -41,14 +41,12 @@ inline cgal_policies::Simplification_report simplify(apps::Mesh& mesh, const std
   return apps::Pipeline(policy_alone(policy, target)).run(mesh);
 }
 
-// The tasks of a partitioned job (Simplification_pipeline::cut, run_part, stitch, result) on
-// `mesh` in `folder`, the parts of each stage in reverse order (any order will do); its number of
-// stages. `mesh` becomes the output.
-inline int run_as_job(const cgal_policies::Simplification_options& options, apps::Mesh& mesh,
-                      const std::filesystem::path& folder,
-                      cgal_policies::Simplification_report& report) {
-  const apps::Pipeline pipeline(options);
-  const std::size_t parts = pipeline.cut(mesh, folder);
+// The stages of a partitioned job cut into `parts` parts in `folder` (Simplification_pipeline::
+// run_part, stitch), the parts of each stage in reverse order (any order will do), then its
+// result into `mesh`; its number of stages.
+inline int run_job_stages(const apps::Pipeline& pipeline, std::size_t parts,
+                          const std::filesystem::path& folder, apps::Mesh& mesh,
+                          cgal_policies::Simplification_report& report) {
   int stage = 0;
   for (;; ++stage) {
     for (std::size_t c = parts; c-- > 0;) pipeline.run_part(folder, stage, c);
@@ -56,6 +54,14 @@ inline int run_as_job(const cgal_policies::Simplification_options& options, apps
   }
   report = pipeline.result(folder, mesh);
   return stage + 1;
+}
+
+// The tasks of a partitioned job on `mesh` in `folder`: cut, then run_job_stages.
+inline int run_as_job(const cgal_policies::Simplification_options& options, apps::Mesh& mesh,
+                      const std::filesystem::path& folder,
+                      cgal_policies::Simplification_report& report) {
+  const apps::Pipeline pipeline(options);
+  return run_job_stages(pipeline, pipeline.cut(mesh, folder), folder, mesh, report);
 }
 
 }  // namespace pipeline_runs
