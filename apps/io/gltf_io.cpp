@@ -729,8 +729,43 @@ int append_float_positions(tinygltf::Model& model, const std::vector<Point>& poi
   return position;
 }
 
-// The normals; quantized, made unit and stored as normalized signed bytes, as gltfpack writes them,
-// a normal without a direction (a corner without one) being 0.
+// How far from 1 the length of a quantized normal may be: a little inside the Khronos validator's
+// 0.00674 for a unit vector, which it measures in single precision.
+constexpr double kUnitLengthTolerance = 0.0067;
+
+// A unit vector as normalized signed bytes: its components rounded to the nearest steps of 1/127,
+// unless that makes it too long or too short (near the diagonal, three components rounded up by
+// almost half a step make it 0.0068 too long); then, of the roundings of each component down or
+// up, the one nearest in direction whose length is within kUnitLengthTolerance of 1.
+std::array<std::int8_t, 3> unit_vector_bytes(const std::array<double, 3>& unit) {
+  const auto length_error = [](const std::array<double, 3>& steps) {
+    return std::abs(std::hypot(steps[0], steps[1], steps[2]) / 127 - 1);
+  };
+  std::array<double, 3> best;
+  for (int k = 0; k < 3; ++k) best[std::size_t(k)] = std::round(unit[std::size_t(k)] * 127);
+  if (length_error(best) > kUnitLengthTolerance) {
+    double best_cosine = -2;
+    for (int corner = 0; corner < 8; ++corner) {
+      std::array<double, 3> steps;
+      double dot = 0, squared = 0;
+      for (std::size_t k = 0; k < 3; ++k) {
+        const double scaled = unit[k] * 127;
+        steps[k] = corner >> k & 1 ? std::ceil(scaled) : std::floor(scaled);
+        dot += steps[k] * unit[k];
+        squared += steps[k] * steps[k];
+      }
+      const double cosine = squared > 0 ? dot / std::sqrt(squared) : -1;
+      if (length_error(steps) <= kUnitLengthTolerance && cosine > best_cosine) {
+        best_cosine = cosine;
+        best = steps;
+      }
+    }
+  }
+  return {std::int8_t(best[0]), std::int8_t(best[1]), std::int8_t(best[2])};
+}
+
+// The normals; quantized, made unit and stored as normalized signed bytes (unit_vector_bytes), as
+// gltfpack writes them, a normal without a direction (a corner without one) being 0.
 int append_normals(tinygltf::Model& model, const std::vector<Kernel::Vector_3>& normals,
                    bool quantized) {
   if (!quantized) {
@@ -742,9 +777,11 @@ int append_normals(tinygltf::Model& model, const std::vector<Kernel::Vector_3>& 
   std::vector<std::int8_t> bytes;
   for (const Kernel::Vector_3& n : normals) {
     const double length = std::sqrt(n.squared_length());
-    for (double c : {n.x(), n.y(), n.z()})
-      bytes.push_back(
-          length > 0 && std::isfinite(length) ? std::int8_t(std::lround(c / length * 127)) : 0);
+    const std::array<std::int8_t, 3> unit =
+        length > 0 && std::isfinite(length)
+            ? unit_vector_bytes({n.x() / length, n.y() / length, n.z() / length})
+            : std::array<std::int8_t, 3>{0, 0, 0};
+    bytes.insert(bytes.end(), unit.begin(), unit.end());
   }
   return append_integer_attribute(model, bytes, TINYGLTF_TYPE_VEC3, true);
 }

@@ -1130,6 +1130,39 @@ TEST(Gltf, QuantizedAndMeshoptOutputsReadBackWithinAStep) {
   fs::remove_all(folder);
 }
 
+// A normal near the diagonal whose components all round up by almost half a step: its nearest
+// bytes, (76, 78, 67), are 0.0068 too long for a unit vector, past the Khronos validator's 0.00674.
+// The quantized file stores (76, 78, 66), the roundings' nearest in direction within it, on the
+// three corners that have it, and (0, 0, 127) on every other corner (+z).
+TEST(Gltf, QuantizedNormalsStayUnitWhereTheNearestBytesWouldNot) {
+  const fs::path folder = scratch_folder("gltf_unit_normals");
+  Mesh plane = test_meshes::textured_plane(true);
+  const Attributes a(plane);
+  const apps::Kernel::Vector_3 diagonal(0.59449212598425194, 0.61024015748031502,
+                                        0.52362778988621739);
+  for (const auto h : CGAL::halfedges_around_face(plane.halfedge(*plane.faces().begin()), plane))
+    (*a.normals)[h] = diagonal;
+  const fs::path out = folder / "plane.glb";
+  apps::write_mesh_atomically(plane, out.string(), {}, apps::Gltf_encoding::quantized);
+  const tinygltf::Model model = undecoded_gltf(out);
+  ASSERT_EQ(model.meshes.size(), 1u);
+  ASSERT_EQ(model.meshes[0].primitives.size(), 1u);
+  const tinygltf::Accessor& normals =
+      model.accessors.at(std::size_t(model.meshes[0].primitives[0].attributes.at("NORMAL")));
+  const tinygltf::BufferView& view = model.bufferViews.at(std::size_t(normals.bufferView));
+  const std::vector<unsigned char>& data = model.buffers.at(std::size_t(view.buffer)).data;
+  std::map<std::array<int, 3>, std::size_t> count;
+  for (std::size_t i = 0; i < normals.count; ++i) {
+    const std::size_t at = view.byteOffset + normals.byteOffset + i * view.byteStride;
+    std::array<int, 3> bytes;
+    for (std::size_t k = 0; k < 3; ++k) bytes[k] = int(std::int8_t(data.at(at + k)));
+    ++count[bytes];
+  }
+  EXPECT_EQ(count, (std::map<std::array<int, 3>, std::size_t>{{{0, 0, 127}, normals.count - 3},
+                                                              {{76, 78, 66}, 3}}));
+  fs::remove_all(folder);
+}
+
 // bob as OBJ, written as GLB and as .gltf and read back: every corner as it was, to float
 // precision, its v turned on the way out and back. bob's material names bob_diffuse.png (map_Kd):
 // both files embed its bytes as they are, as the base colour texture of bob's one material, and
