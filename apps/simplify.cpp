@@ -46,7 +46,7 @@ void print_help() {
          "                        pipeline; a glTF OUT holds every level (MSFT_lod), any\n"
          "                        other OUT becomes OUT_lod0, OUT_lod1, ... (all or none);\n"
          "                        each level is measured against IN; at most "
-      << kMaxFilesWrittenAtOnce
+      << kMaxLodLevels
       << " levels\n"
          "  --gltf-encoding E     how a glTF OUT stores its vertices: float (default),\n"
          "                        quantized (KHR_mesh_quantization: 16-bit positions, 8-bit\n"

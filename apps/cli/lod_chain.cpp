@@ -2,7 +2,6 @@
 
 #include "App_error.h"
 #include "Command_line.h"
-#include "io/atomic_write.h"
 
 #include <cgal_policies/Face_target.h>
 
@@ -27,10 +26,8 @@ std::vector<double> parse_lod_ratios(const std::string& text) {
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
-  if (ratios.size() > cgal_policies::io::kMaxFilesWrittenAtOnce)
-    throw App_error(
-        exit_usage,
-        "--lod: at most " + std::to_string(cgal_policies::io::kMaxFilesWrittenAtOnce) + " levels");
+  if (ratios.size() > kMaxLodLevels)
+    throw App_error(exit_usage, "--lod: at most " + std::to_string(kMaxLodLevels) + " levels");
   return ratios;
 }
 

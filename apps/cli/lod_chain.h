@@ -11,9 +11,13 @@
 
 namespace apps {
 
+// The most levels --lod makes. Each may be a file, written all at once with any files beside them
+// (kMaxFilesWrittenAtOnce, atomic_write.h).
+constexpr std::size_t kMaxLodLevels = 16;
+
 // The ratios of --lod R0,R1,...: the share of IN's faces each level keeps, finest first.
 // App_error(exit_usage), one line naming --lod, unless each is a number in (0, 1] below the one
-// before, and there are at most kMaxFilesWrittenAtOnce (atomic_write.h), as each may be a file.
+// before, and there are at most kMaxLodLevels.
 std::vector<double> parse_lod_ratios(const std::string& text);
 
 // Each level's MSFT_screencoverage, the share of the screen's area below which a viewer switches

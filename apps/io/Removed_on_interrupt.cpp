@@ -26,8 +26,7 @@ static_assert(std::atomic<int>::is_always_lock_free);
 
 // A few files at once at most: the temporaries of write_all_atomically and the files it renamed
 // already (kMaxFilesWrittenAtOnce + 1 at its peak), and a finished picture waiting for its mesh.
-Slot g_slots[32];
-static_assert(std::size(g_slots) >= kMaxFilesWrittenAtOnce + 2);
+Slot g_slots[kMaxFilesWrittenAtOnce + 2];
 char g_message[256] = "interrupted\n";
 std::size_t g_message_length = std::strlen(g_message);
 

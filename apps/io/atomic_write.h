@@ -23,8 +23,10 @@ void write_atomically(const std::string& path,
 // every i, before any is renamed into place. When a write or a rename fails, or SIGINT or SIGTERM
 // comes before the last rename, no file of this call is left: the temporaries are removed, and so
 // are the files already renamed (which had replaced any older ones). Throws Io_error naming the
-// path that failed. At most kMaxFilesWrittenAtOnce paths.
-constexpr std::size_t kMaxFilesWrittenAtOnce = 16;
+// path that failed. At most kMaxFilesWrittenAtOnce paths: room for a chain of levels of detail
+// (apps/cli/lod_chain.h), and beside OBJ levels of a glTF input, their material library and its
+// images (mesh_io.h).
+constexpr std::size_t kMaxFilesWrittenAtOnce = 64;
 void write_all_atomically(
     const std::vector<std::string>& paths,
     const std::function<bool(std::size_t index, const std::string& temporary)>& write);
