@@ -2,6 +2,7 @@
 
 #include "Io_error.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -53,6 +54,16 @@ std::optional<std::string> diffuse_texture_file(const Material_references& mater
     return map->path;
   }
   return std::nullopt;
+}
+
+std::string image_mime_type(const std::vector<unsigned char>& bytes) {
+  static const std::vector<unsigned char> kPng = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  static const std::vector<unsigned char> kJpeg = {0xff, 0xd8, 0xff};
+  const auto starts_with = [&bytes](const std::vector<unsigned char>& signature) {
+    return bytes.size() >= signature.size() &&
+           std::equal(signature.begin(), signature.end(), bytes.begin());
+  };
+  return starts_with(kPng) ? "image/png" : starts_with(kJpeg) ? "image/jpeg" : "";
 }
 
 }  // namespace io

@@ -1,5 +1,6 @@
 // The texture images a textured OBJ mesh is drawn with: the diffuse maps (map_Kd) of its materials,
-// found in the material libraries the file named (mesh_io.h).
+// found in the material libraries the file named (mesh_io.h), and the image types a texture may
+// have.
 #ifndef CGAL_POLICIES_IO_MATERIAL_TEXTURE_H
 #define CGAL_POLICIES_IO_MATERIAL_TEXTURE_H
 
@@ -27,6 +28,11 @@ std::vector<std::optional<Diffuse_map>> diffuse_maps(const Material_references& 
 // has one. Throws Io_error (unreadable input, "<library>: texture '<file>' does not exist") when
 // the file named is missing.
 std::optional<std::string> diffuse_texture_file(const Material_references& materials);
+
+// The mimeType of an image's bytes, from their signature: "image/png" or "image/jpeg", glTF's two
+// image types; empty when neither. A file's extension is often wrong in real assets; its first
+// bytes are not.
+std::string image_mime_type(const std::vector<unsigned char>& bytes);
 
 }  // namespace io
 }  // namespace cgal_policies

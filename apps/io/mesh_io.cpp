@@ -5,6 +5,7 @@
 #include "clean_triangle_soup.h"
 #include "declared_counts.h"
 #include "gltf_io.h"
+#include "gltf_material_library.h"
 #include "obj_writer.h"
 #include "ply_writer.h"
 #include "soup_readers.h"
@@ -192,24 +193,55 @@ std::vector<std::string> write_gltf_atomically(const std::vector<Lod_level>& lev
   return left_out;
 }
 
-// Level k into paths[k], all or none, in any format but glTF (write_mesh_atomically).
-void write_files_atomically(const std::vector<Lod_level>& levels,
-                            const std::vector<std::string>& paths,
-                            const Material_references& materials) {
-  write_all_atomically(paths, [&](std::size_t k, const std::string& temporary) {
+// The materials the faces of `levels` use among `count` materials: those that the OBJ files'
+// usemtl lines name (obj_text).
+std::vector<bool> used_materials(const std::vector<Lod_level>& levels, std::size_t count) {
+  std::vector<bool> used(count, false);
+  for (const Lod_level& level : levels)
+    if (const auto materials = Attributes(*level.mesh).materials)
+      for (const auto f : level.mesh->faces())
+        if ((*materials)[f] < count) used[(*materials)[f]] = true;
+  return used;
+}
+
+// Level k into paths[k], all or none, in any format but glTF (write_mesh_atomically); OBJ files of
+// a glTF input's mesh with the material library and images of gltf_material_library, named after
+// `path`, in the same go. Returns the textures left out.
+std::vector<std::string> write_files_atomically(const std::vector<Lod_level>& levels,
+                                                const std::string& path,
+                                                const std::vector<std::string>& paths,
+                                                const Material_references& materials) {
+  const std::string extension = lower_extension(path);
+  const bool obj = extension == ".obj";
+  Gltf_material_library library;
+  if (obj && materials.gltf)
+    library = gltf_material_library(*materials.gltf, materials.names,
+                                    used_materials(levels, materials.names.size()), path);
+  std::vector<std::string> files = paths;
+  for (const Gltf_material_library::File& file : library.files) files.push_back(file.path);
+  if (materials.gltf) check_no_image_of(*materials.gltf, files);
+  if (files.size() > kMaxFilesWrittenAtOnce)
+    throw Io_error(Io_error::Kind::unwritable_output,
+                   path + ": cannot write " + std::to_string(files.size()) +
+                       " files at once (levels, material library and images); at most " +
+                       std::to_string(kMaxFilesWrittenAtOnce));
+  // A glTF input's library, beside the files; an OBJ input's, named from their folder.
+  std::vector<std::string> libraries;
+  if (!library.files.empty())
+    libraries.push_back(fs::path(library.files.front().path).filename().string());
+  const fs::path folder = fs::absolute(path).parent_path();
+  for (const std::string& input_library : materials.libraries)
+    libraries.push_back(fs::path(input_library).lexically_relative(folder).string());
+  write_all_atomically(files, [&](std::size_t k, const std::string& temporary) {
+    if (k >= levels.size()) return write_bytes(temporary, library.files[k - levels.size()].bytes);
     const Mesh& mesh = *levels[k].mesh;
-    const std::string extension = lower_extension(paths[k]);
-    if (extension == ".obj" && Attributes(mesh).any()) {
-      const fs::path folder = fs::absolute(paths[k]).parent_path();
-      std::vector<std::string> libraries;
-      for (const std::string& library : materials.libraries)
-        libraries.push_back(fs::path(library).lexically_relative(folder).string());
+    if (obj && Attributes(mesh).any())
       return write_bytes(temporary, obj_text(mesh, libraries, materials.names));
-    }
     if (extension == ".ply" && Attributes(mesh).any_corner_values())
       return write_bytes(temporary, ply_bytes(wedge_mesh(mesh)));
     return CGAL::IO::write_polygon_mesh(temporary, mesh, CGAL::parameters::stream_precision(17));
   });
+  return library.left_out;
 }
 
 }  // namespace
@@ -300,8 +332,7 @@ std::vector<std::string> write_mesh_atomically(const Mesh& mesh, const std::stri
   const std::vector<Lod_level> level = {{&mesh, 0}};
   if (is_gltf(lower_extension(path)))
     return write_gltf_atomically(level, path, materials, encoding);
-  write_files_atomically(level, {path}, materials);
-  return {};
+  return write_files_atomically(level, path, {path}, materials);
 }
 
 bool is_gltf_file(const std::string& path) { return is_gltf(lower_extension(path)); }
@@ -331,8 +362,7 @@ std::vector<std::string> write_lod_chain_atomically(const std::vector<Lod_level>
                                                     const Material_references& materials,
                                                     Gltf_encoding encoding) {
   if (holds_lod_chain(path)) return write_gltf_atomically(levels, path, materials, encoding);
-  write_files_atomically(levels, lod_level_paths(path, levels.size()), materials);
-  return {};
+  return write_files_atomically(levels, path, lod_level_paths(path, levels.size()), materials);
 }
 
 }  // namespace io

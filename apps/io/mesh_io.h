@@ -79,11 +79,13 @@ std::optional<Gltf_encoding> gltf_encoding_named(const std::string& name);
 // Io_error (unwritable output) and leaves no file behind when that fails. An OBJ file gets the
 // mesh's corner attributes too (obj_text): its texture coordinates and normals per corner, colours
 // per point, and `materials` (mtllib paths made relative to the file's folder, a usemtl line
-// wherever the material changes). A PLY file gets a vertex per wedge with its values (ply_bytes).
-// A glTF file (.gltf, .glb) is always written by gltf_bytes (gltf_io.h), with whatever the mesh
-// carries, an OBJ material's diffuse map embedded, its vertices stored as `encoding` says. Returns
-// what the file was written without that `materials` name, one line each (a texture file missing
-// or unreadable); none is a failure.
+// wherever the material changes); the materials of a glTF input get a library and images beside
+// it (gltf_material_library.h), written in the same go, none of which may be an image file of the
+// input. A PLY file gets a vertex per wedge with its values (ply_bytes). A glTF file (.gltf, .glb)
+// is always written by gltf_bytes (gltf_io.h), with whatever the mesh carries, an OBJ material's
+// diffuse map embedded, its vertices stored as `encoding` says. Returns what the files were written
+// without that `materials` name, one line each (a texture file missing or unreadable, an image of
+// a type OBJ or glTF does not hold); none is a failure.
 std::vector<std::string> write_mesh_atomically(const Mesh& mesh, const std::string& path,
                                                const Material_references& materials = {},
                                                Gltf_encoding encoding = Gltf_encoding::float32);
@@ -106,8 +108,10 @@ std::vector<std::string> lod_level_paths(const std::string& path, std::size_t le
 
 // Writes a chain of levels of detail, finest first, into lod_level_paths(path, levels.size()),
 // all or none (write_all_atomically), each as write_mesh_atomically writes a mesh; a glTF file
-// holds every level (gltf_bytes: MSFT_lod), stored as `encoding` says. Returns what the files were
-// written without, as write_mesh_atomically does. At most kMaxFilesWrittenAtOnce levels.
+// holds every level (gltf_bytes: MSFT_lod), stored as `encoding` says, and OBJ levels of a glTF
+// input share one material library and its images, named after `path`. Returns what the files
+// were written without, as write_mesh_atomically does. At most kMaxFilesWrittenAtOnce files in
+// all, or Io_error before any is written.
 std::vector<std::string> write_lod_chain_atomically(
     const std::vector<Lod_level>& levels, const std::string& path,
     const Material_references& materials = {}, Gltf_encoding encoding = Gltf_encoding::float32);

@@ -4,7 +4,6 @@
 
 #include <tiny_gltf.h>
 
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -14,18 +13,6 @@
 namespace cgal_policies {
 namespace io {
 namespace {
-
-// glTF's mimeType of an image file's bytes, from their signature; empty when neither PNG nor
-// JPEG. A file's extension is often wrong in real assets; its first bytes are not.
-std::string image_mime_type(const std::vector<unsigned char>& bytes) {
-  static const std::vector<unsigned char> kPng = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  static const std::vector<unsigned char> kJpeg = {0xff, 0xd8, 0xff};
-  const auto starts_with = [&bytes](const std::vector<unsigned char>& signature) {
-    return bytes.size() >= signature.size() &&
-           std::equal(signature.begin(), signature.end(), bytes.begin());
-  };
-  return starts_with(kPng) ? "image/png" : starts_with(kJpeg) ? "image/jpeg" : "";
-}
 
 // Embeds `map`'s file in `looks` as an image, its bytes as the file holds them, with a texture
 // of its own, and returns that texture's index; -1, and the line saying why in `left_out`, when

@@ -111,5 +111,21 @@ std::string obj_text(const Mesh& mesh, const std::vector<std::string>& material_
   return text + faces;
 }
 
+std::string mtl_text(const std::vector<Mtl_material>& materials) {
+  std::string text = "# written by cgal_policies\n";
+  for (const Mtl_material& material : materials) {
+    text += "\nnewmtl " + material.name + "\nKd";
+    for (double c : material.diffuse) append_number(text, c);
+    text.push_back('\n');
+    if (material.opacity < 1) {
+      text += 'd';
+      append_number(text, material.opacity);
+      text.push_back('\n');
+    }
+    if (!material.diffuse_map.empty()) text += "map_Kd " + material.diffuse_map + "\n";
+  }
+  return text;
+}
+
 }  // namespace io
 }  // namespace cgal_policies

@@ -12,6 +12,7 @@
 #include "evaluation/surface_error.h"
 #include "io/clean_triangle_soup.h"
 #include "io/gltf_io.h"
+#include "io/material_texture.h"
 #include "io/mesh_io.h"
 #include "io/obj_writer.h"
 #include "io/polygon_crossing.h"
@@ -1060,6 +1061,45 @@ TEST_F(Cli, ObjToGltfCountsVFromTheImagesTopAndBack) {
   const std::array<double, 2> expected = {double(0.799687f), 1 - double(float(1 - 0.728214))};
   EXPECT_EQ(std::count(back.corners.uvs.begin(), back.corners.uvs.end(), expected), 1);
   EXPECT_NEAR(expected[1], 0.728214, 3e-8);
+}
+
+// bob as a GLB, its texture embedded, simplified into an OBJ: the OBJ's material library names
+// bob's material and its image, written beside as the PNG's bytes, which the OBJ reader finds; the
+// texture lies where it lay on bob (a v not turned back would turn every texture triangle over).
+TEST_F(Cli, SimplifyWritesAGlbsMaterialsAndImagesBesideAnObj) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const std::string bob = test_meshes::data_file("bob_tri.obj");
+  const fs::path glb = file("bob.glb");
+  ASSERT_EQ(run("simplify", bob + " " + glb.string() + " 1 --policy gh --quiet").exit_code, 0);
+  fs::create_directories(file("out"));
+  const fs::path out = file("out") / "bob.obj";
+  const Command_result r =
+      run("simplify", glb.string() + " " + out.string() + " 0.5 --policy gh --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  EXPECT_EQ(read_text(file("out") / "bob.mtl"),
+            "# written by cgal_policies\n\nnewmtl feathers\nKd 1 1 1\nmap_Kd bob_image0.png\n");
+  EXPECT_EQ(read_text(file("out") / "bob_image0.png"),
+            read_text(test_meshes::data_file("bob_diffuse.png")));
+  EXPECT_EQ(read_text(out).rfind("# written by cgal_policies\nmtllib bob.mtl\nv ", 0), 0u);
+  apps::Read_report report;
+  apps::read_triangle_mesh(out.string(), &report, apps::Corner_attribute_reading::keep);
+  EXPECT_EQ(apps::diffuse_texture_file(report.materials),
+            (file("out") / "bob_image0.png").string());
+  expect_texture_kept(bob, out, 20000);
+}
+
+// A file the OBJ's library would write that is an image file of IN: refused, one line naming it,
+// exit 4, and nothing written.
+TEST_F(Cli, SimplifyRefusesToOverwriteAnImageOfIn) {
+  Gltf_builder square = gltf_fixtures::textured_square(0, 2);
+  square.model.images[1].uri = "out_image0.png";
+  square.write(file("in.glb"));
+  const fs::path image = write("out_image0.png", "the input's");
+  expect_failure(file("in.glb").string() + " " + file("out.obj").string() + " 1 --policy gh", 4,
+                 image, file("out.obj"));
+  EXPECT_FALSE(fs::exists(file("out.mtl")));
+  EXPECT_EQ(read_text(image), "the input's");
 }
 
 // gltfpack's -c output (tests/apps/gltfpack/): quantized, meshopt-compressed, its texture

@@ -1,5 +1,6 @@
 // glTF files built with tinygltf's API for the tests of the io layer and of simplify: accessors of
-// any component type, one mesh of several primitives under a node, and a two-primitive square.
+// any component type, images, one mesh of several primitives under a node, and a two-primitive
+// square, bare or with materials and images.
 #ifndef CGAL_POLICIES_TESTS_APPS_GLTF_BUILDER_H
 #define CGAL_POLICIES_TESTS_APPS_GLTF_BUILDER_H
 
@@ -9,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gltf_fixtures {
@@ -24,23 +26,28 @@ class Gltf_builder {
   template <class T>
   int accessor(const std::vector<T>& values, int component_type, int type,
                bool normalized = false) {
-    std::vector<unsigned char>& data = model.buffers[0].data;
-    tinygltf::BufferView view;
-    view.buffer = 0;
-    view.byteOffset = data.size();
-    view.byteLength = values.size() * sizeof(T);
-    const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
-    data.insert(data.end(), bytes, bytes + view.byteLength);
-    data.resize((data.size() + 3) / 4 * 4);
-    model.bufferViews.push_back(view);
     tinygltf::Accessor a;
-    a.bufferView = int(model.bufferViews.size() - 1);
+    a.bufferView = view(values.data(), values.size() * sizeof(T));
     a.componentType = component_type;
     a.type = type;
     a.normalized = normalized;
     a.count = values.size() / std::size_t(tinygltf::GetNumComponentsInType(std::uint32_t(type)));
     model.accessors.push_back(a);
     return int(model.accessors.size() - 1);
+  }
+  // An image of these bytes, in a bufferView of its own, with a texture of its own; returns the
+  // texture.
+  int held_image(const std::string& bytes, const std::string& mime_type) {
+    tinygltf::Image image;
+    image.bufferView = view(bytes.data(), bytes.size());
+    image.mimeType = mime_type;
+    return texture(std::move(image));
+  }
+  // An image of its own file, or of a data URI, with a texture of its own; returns the texture.
+  int image_at(const std::string& uri) {
+    tinygltf::Image image;
+    image.uri = uri;
+    return texture(std::move(image));
   }
   // One mesh of these primitives, under one node moved by `translation`.
   void place(std::vector<tinygltf::Primitive> primitives, std::vector<double> translation) {
@@ -55,9 +62,31 @@ class Gltf_builder {
   }
   void write(const fs::path& path) const {
     std::ofstream file(path, std::ios::binary);
-    tinygltf::TinyGLTF().WriteGltfSceneToStream(&model, file, false, path.extension() == ".glb");
+    tinygltf::TinyGLTF writer;
+    writer.SetImageWriter(nullptr, nullptr);  // each image as the model holds it: a view or a uri
+    writer.WriteGltfSceneToStream(&model, file, false, path.extension() == ".glb");
   }
   tinygltf::Model model;
+
+ private:
+  int view(const void* bytes, std::size_t size) {
+    std::vector<unsigned char>& data = model.buffers[0].data;
+    tinygltf::BufferView buffer_view;
+    buffer_view.buffer = 0;
+    buffer_view.byteOffset = data.size();
+    buffer_view.byteLength = size;
+    const auto* first = static_cast<const unsigned char*>(bytes);
+    data.insert(data.end(), first, first + size);
+    data.resize((data.size() + 3) / 4 * 4);
+    model.bufferViews.push_back(buffer_view);
+    return int(model.bufferViews.size() - 1);
+  }
+  int texture(tinygltf::Image image) {
+    model.images.push_back(std::move(image));
+    model.textures.emplace_back();
+    model.textures.back().source = int(model.images.size() - 1);
+    return int(model.textures.size() - 1);
+  }
 };
 
 inline tinygltf::Primitive triangles(int position, int indices, int uv, int material) {
@@ -102,6 +131,31 @@ inline Gltf_builder two_primitive_square() {
 
 // Any bytes: the reader and the writer never decode an image.
 inline const std::string kImageBytes = std::string("\x89PNG\r\n\x1a\n", 8) + "not decoded";
+inline const std::string kJpegBytes = std::string("\xff\xd8\xff\xe0", 4) + "not decoded";
+inline const std::string kJpegDataUri = "data:image/jpeg;base64,/9j/4G5vdCBkZWNvZGVk";  // of those
+
+// two_primitive_square() with three images, each the source of the texture of its index: a PNG in
+// a bufferView (kImageBytes), the file tex/skin.png and a JPEG in a data URI (kJpegBytes). Its
+// first primitive's material, "paint", has base colour (0.5, 0.25, 1) and alpha 0.5, which its
+// alphaMode OPAQUE ignores, and texture `paint_texture`; its second's, unnamed, baseColorFactor
+// (0.2, 0.4, 0.6, 0.5), alphaMode BLEND, and the file's texture; a third material, "unused", that
+// no primitive has, texture `unused_texture`.
+inline Gltf_builder textured_square(int paint_texture, int unused_texture) {
+  Gltf_builder b = two_primitive_square();
+  b.held_image(kImageBytes, "image/png");
+  b.image_at("tex/skin.png");
+  b.image_at(kJpegDataUri);
+  std::vector<tinygltf::Material>& materials = b.model.materials;
+  materials.resize(3);
+  materials[0].pbrMetallicRoughness.baseColorFactor = {0.5, 0.25, 1, 0.5};
+  materials[0].pbrMetallicRoughness.baseColorTexture.index = paint_texture;
+  materials[1].pbrMetallicRoughness.baseColorFactor = {0.2, 0.4, 0.6, 0.5};
+  materials[1].alphaMode = "BLEND";
+  materials[1].pbrMetallicRoughness.baseColorTexture.index = 1;
+  materials[2].name = "unused";
+  materials[2].pbrMetallicRoughness.baseColorTexture.index = unused_texture;
+  return b;
+}
 
 }  // namespace gltf_fixtures
 

@@ -9,8 +9,10 @@
 #include "evaluation/attribute_error.h"
 #include "evaluation/mesh_validity.h"
 #include "evaluation/surface_error.h"
+#include "io/atomic_write.h"
 #include "io/clean_triangle_soup.h"
 #include "io/gltf_io.h"
+#include "io/material_texture.h"
 #include "io/mesh_io.h"
 #include "io/obj_writer.h"
 #include "io/polygon_crossing.h"
@@ -45,6 +47,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <optional>
 #include <random>
 #include <regex>
 #include <set>
@@ -1313,6 +1316,186 @@ TEST(Gltf, TwoPrimitivesWithAUvSeamAreOneConnectedMesh) {
   ASSERT_TRUE(a.colors);
   EXPECT_EQ((*a.colors)[corner_at(in_first, {10, 0, 0})], (Attributes::Color{0, 0.2, 1, 1}));
   EXPECT_TRUE(std::isnan((*a.colors)[corner_at(in_second, {10, 0, 0})][0]));
+  fs::remove_all(folder);
+}
+
+// The names of the files in `folder`.
+std::set<std::string> file_names(const fs::path& folder) {
+  std::set<std::string> names;
+  for (const auto& entry : fs::directory_iterator(folder))
+    names.insert(entry.path().filename().string());
+  return names;
+}
+
+// The `vt` lines of an OBJ file's text.
+std::set<std::string> texture_coordinate_lines(const std::string& obj) {
+  std::set<std::string> lines;
+  std::istringstream text(obj);
+  for (std::string line; std::getline(text, line);)
+    if (line.rfind("vt ", 0) == 0) lines.insert(line);
+  return lines;
+}
+
+// textured_square() written as OBJ: a material library beside it defines the two materials its
+// faces use (not "unused"), with their colours and images: paint's image, which the glTF file
+// held (a PNG in a GLB's bufferView, a JPEG in a .gltf's data URI), becomes a file of its bytes
+// beside the OBJ, and the other material's image file is named from the OBJ's folder. The texture
+// coordinates are OBJ's, v from the image's bottom, and the OBJ reads back with the same ones, its
+// images found through the library.
+TEST(Gltf, AnObjOfAGltfGetsAMaterialLibraryAndTheImagesTheGltfHeld) {
+  const fs::path folder = scratch_folder("gltf_to_obj");
+  fs::create_directories(folder / "tex");
+  std::ofstream(folder / "tex" / "skin.png") << "named, never read";
+  using Case = std::tuple<std::string, int, std::string, std::string>;
+  for (const auto& [name, paint_texture, image, bytes] :
+       {Case{"glb", 0, "square_image0.png", gltf_fixtures::kImageBytes},
+        Case{"gltf", 2, "square_image2.jpg", gltf_fixtures::kJpegBytes}}) {
+    SCOPED_TRACE(name);
+    const fs::path in = folder / ("square." + name);
+    gltf_fixtures::textured_square(paint_texture, 2 - paint_texture).write(in);
+    apps::Read_report report;
+    const Mesh mesh =
+        apps::read_triangle_mesh(in.string(), &report, apps::Corner_attribute_reading::keep);
+    const fs::path out_folder = folder / ("from_" + name);
+    fs::create_directories(out_folder);
+    const fs::path out = out_folder / "square.obj";
+    EXPECT_EQ(apps::write_mesh_atomically(mesh, out.string(), report.materials),
+              std::vector<std::string>{});
+    EXPECT_EQ(file_names(out_folder), (std::set<std::string>{"square.obj", "square.mtl", image}));
+    EXPECT_EQ(read_text(out_folder / "square.mtl"),
+              "# written by cgal_policies\n\nnewmtl paint\nKd 0.5 0.25 1\nmap_Kd " + image +
+                  "\n\nnewmtl material_1\nKd 0.2 0.4 0.6\nd 0.5\nmap_Kd ../tex/skin.png\n");
+    EXPECT_EQ(read_text(out_folder / image), bytes);
+    const std::string obj = read_text(out);
+    EXPECT_EQ(obj.rfind("# written by cgal_policies\nmtllib square.mtl\n", 0), 0u) << obj;
+    EXPECT_NE(obj.find("\nusemtl paint\n"), std::string::npos) << obj;
+    EXPECT_NE(obj.find("\nusemtl material_1\n"), std::string::npos) << obj;
+    // glTF's (0, 0), (0.5, 0), (0.5, 0.5) and (0, 0), (0.8, 0.8), (0, 1), v counted from the top.
+    EXPECT_EQ(texture_coordinate_lines(obj),
+              (std::set<std::string>{"vt 0 1", "vt 0.5 1", "vt 0.5 0.5",
+                                     "vt 0.8 0.19999999999999996", "vt 0 0"}));
+
+    apps::Read_report again;
+    EXPECT_EQ(uvs_by_corner(apps::read_triangle_mesh(out.string(), &again,
+                                                     apps::Corner_attribute_reading::keep)),
+              uvs_by_corner(mesh));
+    EXPECT_EQ(again.materials.names, (std::vector<std::string>{"paint", "material_1"}));
+    std::vector<std::string> maps;
+    for (const std::optional<apps::Diffuse_map>& map : apps::diffuse_maps(again.materials))
+      maps.push_back(map ? map->path : "none");
+    EXPECT_EQ(maps, (std::vector<std::string>{(out_folder / image).string(),
+                                              (folder / "tex" / "skin.png").string()}));
+  }
+  fs::remove_all(folder);
+}
+
+// The Io_error of writing `mesh` into `path`, of kind unwritable output; empty when it is written.
+std::string write_failure(const Mesh& mesh, const fs::path& path,
+                          const apps::Material_references& materials) {
+  try {
+    apps::write_mesh_atomically(mesh, path.string(), materials);
+  } catch (const apps::Io_error& e) {
+    EXPECT_EQ(e.kind(), apps::Io_error::Kind::unwritable_output);
+    return e.what();
+  }
+  return "";
+}
+
+// An OBJ of a glTF file, its library and images are written together or not at all: one that
+// cannot be renamed into place (a folder of the library's name is there) leaves none of them, and
+// one that would overwrite an image file of the input is refused before any is written.
+TEST(Gltf, AnObjOfAGltfAndItsLibraryAreWrittenAllOrNothing) {
+  const fs::path folder = scratch_folder("gltf_to_obj_failures");
+  Gltf_builder square = gltf_fixtures::textured_square(0, 2);
+  square.model.images[1].uri = "square_image0.png";
+  square.write(folder / "square.glb");
+  std::ofstream(folder / "square_image0.png") << "the input's";
+  apps::Read_report report;
+  const Mesh mesh = apps::read_triangle_mesh((folder / "square.glb").string(), &report,
+                                             apps::Corner_attribute_reading::keep);
+
+  fs::create_directories(folder / "out" / "square.mtl");
+  const std::string cause = write_failure(mesh, folder / "out" / "square.obj", report.materials);
+  EXPECT_EQ(cause.rfind((folder / "out" / "square.mtl").string() + ": cannot write: ", 0), 0u)
+      << cause;
+  EXPECT_EQ(file_names(folder / "out"), std::set<std::string>{"square.mtl"});
+
+  EXPECT_EQ(
+      write_failure(mesh, folder / "square.obj", report.materials),
+      (folder / "square_image0.png").string() + ": refusing to overwrite an image of the input");
+  EXPECT_EQ(file_names(folder), (std::set<std::string>{"out", "square.glb", "square_image0.png"}));
+  EXPECT_EQ(read_text(folder / "square_image0.png"), "the input's");
+  fs::remove_all(folder);
+}
+
+// A base colour texture whose image is a WebP held in the file, or that has no image but in an
+// extension (KHR_texture_basisu's), is left out of the library with a line each; the OBJ and the
+// rest of the library are written.
+TEST(Gltf, ATextureWithoutAPngOrJpegImageIsALineNotAFailure) {
+  const fs::path folder = scratch_folder("gltf_to_obj_webp");
+  Gltf_builder square = gltf_fixtures::textured_square(0, 2);
+  square.model.materials[0].pbrMetallicRoughness.baseColorTexture.index =
+      square.held_image(std::string("RIFF\0\0\0\0WEBP", 12), "image/webp");
+  square.model.textures[1].source = -1;
+  square.model.textures[1].extensions["KHR_texture_basisu"] =
+      tinygltf::Value(tinygltf::Value::Object{{"source", tinygltf::Value(1)}});
+  square.model.extensionsUsed.push_back("KHR_texture_basisu");
+  square.write(folder / "square.glb");
+  apps::Read_report report;
+  const Mesh mesh = apps::read_triangle_mesh((folder / "square.glb").string(), &report,
+                                             apps::Corner_attribute_reading::keep);
+  const fs::path library = folder / "out" / "square.mtl";
+  const std::string cause =
+      "': its base colour texture has no PNG or JPEG image; written without it";
+  EXPECT_EQ(
+      apps::write_mesh_atomically(mesh, (folder / "out" / "square.obj").string(), report.materials),
+      (std::vector<std::string>{library.string() + ": material 'paint" + cause,
+                                library.string() + ": material 'material_1" + cause}));
+  EXPECT_EQ(read_text(library),
+            "# written by cgal_policies\n\nnewmtl paint\nKd 0.5 0.25 1\n"
+            "\nnewmtl material_1\nKd 0.2 0.4 0.6\nd 0.5\n");
+  EXPECT_EQ(file_names(folder / "out"), (std::set<std::string>{"square.obj", "square.mtl"}));
+  fs::remove_all(folder);
+}
+
+// OBJ levels of detail of a glTF file share one library and its images, named after the chain's
+// path. With them, kMaxFilesWrittenAtOnce files are written at once; a chain of one more level is
+// refused before any file is written.
+TEST(Gltf, ObjLevelsOfAGltfShareOneLibraryWithinTheFileLimit) {
+  const fs::path folder = scratch_folder("gltf_to_obj_levels");
+  gltf_fixtures::textured_square(0, 2).write(folder / "square.glb");
+  apps::Read_report report;
+  const Mesh mesh = apps::read_triangle_mesh((folder / "square.glb").string(), &report,
+                                             apps::Corner_attribute_reading::keep);
+  // Beside the levels, the library and paint's image.
+  const std::size_t most = apps::kMaxFilesWrittenAtOnce - 2;
+  std::vector<apps::Lod_level> levels(most, {&mesh, 0});
+  EXPECT_EQ(apps::write_lod_chain_atomically(levels, (folder / "out" / "square.obj").string(),
+                                             report.materials),
+            std::vector<std::string>{});
+  const std::set<std::string> written = file_names(folder / "out");
+  EXPECT_EQ(written.size(), apps::kMaxFilesWrittenAtOnce);
+  EXPECT_EQ(written.count("square.mtl") + written.count("square_image0.png"), 2u);
+  for (const std::size_t level : {std::size_t(0), most - 1}) {
+    const std::string obj =
+        read_text(folder / "out" / ("square_lod" + std::to_string(level) + ".obj"));
+    EXPECT_EQ(obj.rfind("# written by cgal_policies\nmtllib square.mtl\n", 0), 0u) << level;
+  }
+
+  levels.push_back({&mesh, 0});
+  fs::create_directories(folder / "more");
+  try {
+    apps::write_lod_chain_atomically(levels, (folder / "more" / "square.obj").string(),
+                                     report.materials);
+    ADD_FAILURE() << "written";
+  } catch (const apps::Io_error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              (folder / "more" / "square.obj").string() + ": cannot write " +
+                  std::to_string(most + 3) +
+                  " files at once (levels, material library and images); at most " +
+                  std::to_string(apps::kMaxFilesWrittenAtOnce));
+  }
+  EXPECT_TRUE(fs::is_empty(folder / "more"));
   fs::remove_all(folder);
 }
 
