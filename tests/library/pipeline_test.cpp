@@ -1155,6 +1155,21 @@ TEST(PartitionedJob, ReadsAPartBackAsItWasHeld) {
   }
 }
 
+// A job's report against that of the run it stands for: the same fields, but the seconds.
+void expect_the_run_reported(const cgal_policies::Simplification_report& job,
+                             const cgal_policies::Simplification_report& run) {
+  EXPECT_EQ(job.parts, run.parts);
+  EXPECT_EQ(job.input_faces, run.input_faces);
+  EXPECT_EQ(job.input_vertices, run.input_vertices);
+  EXPECT_EQ(job.output_faces, run.output_faces);
+  EXPECT_EQ(job.stop_reason, run.stop_reason);
+  EXPECT_EQ(job.attributes_carried, run.attributes_carried);
+  EXPECT_EQ(job.fitted, run.fitted);
+  EXPECT_EQ(job.fit.rounds, run.fit.rounds);
+  EXPECT_EQ(job.fit.moves, run.fit.moves);
+  EXPECT_EQ(job.fit.flips, run.fit.flips);
+}
+
 // Cut, parts and stitch give the bytes of the run in memory, with its report: on four parts with
 // each kind of corner value, with the fit by cells, and on one part (a mesh the run would not cut).
 TEST(PartitionedJob, GivesTheBytesOfTheRunInMemory) {
@@ -1181,15 +1196,8 @@ TEST(PartitionedJob, GivesTheBytesOfTheRunInMemory) {
     cgal_policies::Simplification_report report;
     EXPECT_EQ(run_as_job(options, mesh, folder.path(), report), c.stages);
     EXPECT_EQ(report.parts, c.parts);
-    EXPECT_EQ(report.parts, expected.parts);
-    EXPECT_EQ(report.input_faces, expected.input_faces);
-    EXPECT_EQ(report.output_faces, expected.output_faces);
-    EXPECT_EQ(report.stop_reason, expected.stop_reason);
-    EXPECT_EQ(report.attributes_carried, expected.attributes_carried);
     EXPECT_EQ(report.fitted, c.fit);
-    EXPECT_EQ(report.fit.rounds, expected.fit.rounds);
-    EXPECT_EQ(report.fit.moves, expected.fit.moves);
-    EXPECT_EQ(report.fit.flips, expected.fit.flips);
+    expect_the_run_reported(report, expected);
     EXPECT_GT(report.seconds(cgal_policies::Simplification_pass::simplification), 0);
     EXPECT_GT(report.seconds(cgal_policies::Simplification_pass::components), 0);
     EXPECT_TRUE(written_bytes(mesh, "job") == written_bytes(in_memory, "in_memory"))
@@ -1228,15 +1236,8 @@ TEST(PartitionedJob, CutFromAStreamGivesTheBytesOfTheStreamedRun) {
     Mesh mesh;
     cgal_policies::Simplification_report report;
     EXPECT_EQ(run_job_stages(pipeline, parts, folder, mesh, report), c.stages);
-    EXPECT_EQ(report.parts, expected.parts);
-    EXPECT_EQ(report.input_faces, expected.input_faces);
-    EXPECT_EQ(report.input_vertices, expected.input_vertices);
-    EXPECT_EQ(report.output_faces, expected.output_faces);
-    EXPECT_EQ(report.stop_reason, expected.stop_reason);
     EXPECT_EQ(report.fitted, c.fit);
-    EXPECT_EQ(report.fit.rounds, expected.fit.rounds);
-    EXPECT_EQ(report.fit.moves, expected.fit.moves);
-    EXPECT_EQ(report.fit.flips, expected.fit.flips);
+    expect_the_run_reported(report, expected);
     EXPECT_TRUE(written_bytes(mesh, "streamed_job") == written_bytes(streamed, "streamed_run"))
         << "the job and the streamed run wrote different files";
   }
