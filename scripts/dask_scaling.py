@@ -2,8 +2,10 @@
 """Times cgal_policies.dask.simplify on a LocalCluster of one worker process and of two, in one
 run, each worker with one thread and the library with one thread per task, and checks that both
 give the same mesh. Prints a line per run and the ratio (docs/python.md, "On a Dask cluster").
+With --from-file the tasks get the file's path, cut while it is read in passes, never whole.
 
-usage: PYTHONPATH=build/python /usr/bin/python3 scripts/dask_scaling.py MESH [KEY=VALUE ...]
+usage: PYTHONPATH=build/python /usr/bin/python3 scripts/dask_scaling.py [--from-file] MESH
+           [KEY=VALUE ...]
   e.g. scripts/dask_scaling.py /tmp/dragon16.ply parts=16 ratio=0.01 policy=flat-lt fit=True
 """
 import ast
@@ -26,13 +28,19 @@ def option(text):
 
 
 def main():
-    if len(sys.argv) < 2:
+    args = sys.argv[1:]
+    from_file = bool(args) and args[0] == "--from-file"
+    if from_file:
+        args.pop(0)
+    if not args:
         sys.exit(__doc__)
-    options = dict(option(a) for a in sys.argv[2:])
+    options = dict(option(a) for a in args[1:])
     options["threads"] = 1
-    start = time.perf_counter()
-    mesh = cp.read(sys.argv[1])
-    print(f"read {len(mesh.faces)} faces in {time.perf_counter() - start:.1f} s", flush=True)
+    mesh = args[0]
+    if not from_file:
+        start = time.perf_counter()
+        mesh = cp.read(args[0])
+        print(f"read {len(mesh.faces)} faces in {time.perf_counter() - start:.1f} s", flush=True)
     seconds, outputs = {}, {}
     for workers in (1, 2):
         with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
