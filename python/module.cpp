@@ -303,8 +303,9 @@ Mesh.repairs). ValueError with the reader's message when it cannot.
         py::arg("gltf_encoding") = "float", R"doc(
 Writes a mesh by its extension (.obj .off .ply .stl .gltf .glb), all or nothing: an OBJ, PLY or
 glTF file keeps the corner attributes with their seams, an OBJ or glTF file the materials, a
-glTF file an OBJ material's texture image (a UserWarning for one that cannot be read; the file
-is written without it). OSError when the file cannot be written; nothing is left behind then.
+glTF file an OBJ material's texture image, an OBJ file of a glTF mesh a material library and the
+images the glTF file held, beside it (a UserWarning for an image that cannot be read or kept;
+the file is written without it). OSError when the file cannot be written; nothing is left behind then.
 gltf_encoding, for a glTF file, as simplify's --gltf-encoding: "float", "quantized"
 (KHR_mesh_quantization) or "meshopt" (quantized, then EXT_meshopt_compression); ValueError for
 another name or another kind of file.

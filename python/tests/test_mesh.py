@@ -53,6 +53,21 @@ def test_a_textured_round_trip_keeps_the_attributes(tmp_path, data, name):
         assert np.array_equal(back.materials, spot.materials)
 
 
+def test_an_obj_of_a_gltf_mesh_gets_its_material_library_and_image(tmp_path, data):
+    """bob through a GLB (its PNG embedded), then to OBJ: the library and the PNG beside it."""
+    cp.write(cp.read(data / "bob_tri.obj"), tmp_path / "bob.glb")
+    bob = cp.read(tmp_path / "bob.glb")
+    (tmp_path / "out").mkdir()
+    cp.write(bob, tmp_path / "out" / "bob.obj")
+    assert sorted(p.name for p in (tmp_path / "out").iterdir()) == \
+        ["bob.mtl", "bob.obj", "bob_image0.png"]
+    assert "mtllib bob.mtl\n" in (tmp_path / "out" / "bob.obj").read_text()
+    assert (tmp_path / "out" / "bob.mtl").read_text().endswith(
+        "newmtl feathers\nKd 1 1 1\nmap_Kd bob_image0.png\n")
+    assert (tmp_path / "out" / "bob_image0.png").read_bytes() == \
+        (data / "bob_diffuse.png").read_bytes()
+
+
 def glb_json(path):
     """The JSON chunk of a .glb file: after the 12-byte header, its length, its type, then it."""
     data = path.read_bytes()
