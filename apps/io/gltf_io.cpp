@@ -23,6 +23,7 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <string_view>
 #include <type_traits>
 #include <vector>
 
@@ -546,6 +547,45 @@ class Soup_builder {
   std::array<bool, 3> m_any{};  // whether any primitive has texture coordinates, normals, colours
 };
 
+// The file path of a relative URI reference: each %XX escape the byte it stands for. glTF's
+// uris are URI references: "my%20skin.png" names the file "my skin.png".
+std::string uri_path(const std::string& uri) {
+  const auto hex = [](char c) {
+    return c >= '0' && c <= '9'   ? c - '0'
+           : c >= 'a' && c <= 'f' ? c - 'a' + 10
+           : c >= 'A' && c <= 'F' ? c - 'A' + 10
+                                  : -1;
+  };
+  std::string path;
+  for (std::size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '%' && i + 2 < uri.size() && hex(uri[i + 1]) >= 0 && hex(uri[i + 2]) >= 0) {
+      path.push_back(char(hex(uri[i + 1]) * 16 + hex(uri[i + 2])));
+      i += 2;
+    } else {
+      path.push_back(uri[i]);
+    }
+  }
+  return path;
+}
+
+// A relative file path as a URI reference: every byte but the unreserved ones and the slashes
+// percent-encoded.
+std::string uri_of_path(const fs::path& path) {
+  static const char kHex[] = "0123456789ABCDEF";
+  std::string uri;
+  for (const char c : path.generic_string()) {
+    const bool unreserved = (c >= '0' && c <= '9') || (c >= 'a' && c <= 'z') ||
+                            (c >= 'A' && c <= 'Z') ||
+                            std::string_view("-._~/").find(c) != std::string_view::npos;
+    const unsigned byte = static_cast<unsigned char>(c);
+    if (unreserved)
+      uri.push_back(c);
+    else
+      uri += {'%', kHex[byte >> 4], kHex[byte & 15]};
+  }
+  return uri;
+}
+
 // What a written file keeps of the input: its looks, image files named by absolute path and
 // embedded images as bytes (the geometry's buffers are not needed any more).
 std::shared_ptr<const tinygltf::Model> kept_looks(tinygltf::Model& model, const std::string& path) {
@@ -553,7 +593,7 @@ std::shared_ptr<const tinygltf::Model> kept_looks(tinygltf::Model& model, const 
   const fs::path folder = fs::absolute(path).parent_path();
   for (tinygltf::Image& image : model.images) {
     if (!image.uri.empty()) {
-      image.uri = (folder / image.uri).lexically_normal().string();
+      image.uri = (folder / uri_path(image.uri)).lexically_normal().string();
       image.image.clear();  // the file stays where it is
     }
     image.bufferView = -1;
@@ -631,7 +671,7 @@ void pass_looks_through(tinygltf::Model& model, const tinygltf::Model& looks,
   model.extensionsUsed = looks.extensionsUsed;
   for (tinygltf::Image image : looks.images) {
     if (!image.uri.empty()) {
-      image.uri = fs::path(image.uri).lexically_relative(output_folder).string();
+      image.uri = uri_of_path(fs::path(image.uri).lexically_relative(output_folder));
     } else {
       image.bufferView = append_view(model, image.image.data(), image.image.size(), 0);
       image.image.clear();

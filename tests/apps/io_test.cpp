@@ -1428,6 +1428,31 @@ TEST(Gltf, AnObjOfAGltfAndItsLibraryAreWrittenAllOrNothing) {
   fs::remove_all(folder);
 }
 
+// glTF's image uris are URI references: "a%20b_image0.png" names the file "a b_image0.png". An
+// OBJ's library names that file as it is, a glTF file written elsewhere by its URI again, and an
+// OBJ that would write its own image over it ("a b.obj" writes paint's as "a b_image0.png") is
+// refused, the file as it was.
+TEST(Gltf, ImageUrisNameTheFilesTheyEncode) {
+  const fs::path folder = scratch_folder("gltf_encoded_uris");
+  Gltf_builder square = gltf_fixtures::textured_square(0, 2);
+  square.model.images[1].uri = "a%20b_image0.png";
+  square.write(folder / "square.glb");
+  std::ofstream(folder / "a b_image0.png") << "the input's";
+  apps::Read_report report;
+  const Mesh mesh = apps::read_triangle_mesh((folder / "square.glb").string(), &report,
+                                             apps::Corner_attribute_reading::keep);
+  fs::create_directories(folder / "out");
+  apps::write_mesh_atomically(mesh, (folder / "out" / "square.obj").string(), report.materials);
+  const std::string library = read_text(folder / "out" / "square.mtl");
+  EXPECT_NE(library.find("\nmap_Kd ../a b_image0.png\n"), std::string::npos) << library;
+  apps::write_mesh_atomically(mesh, (folder / "out" / "square.gltf").string(), report.materials);
+  EXPECT_EQ(gltf_json(folder / "out" / "square.gltf")["images"][1]["uri"], "../a%20b_image0.png");
+  EXPECT_EQ(write_failure(mesh, folder / "a b.obj", report.materials),
+            (folder / "a b_image0.png").string() + ": refusing to overwrite an image of the input");
+  EXPECT_EQ(read_text(folder / "a b_image0.png"), "the input's");
+  fs::remove_all(folder);
+}
+
 // A base colour texture whose image is a WebP held in the file, or that has no image but in an
 // extension (KHR_texture_basisu's), is left out of the library with a line each; the OBJ and the
 // rest of the library are written.
