@@ -54,6 +54,7 @@
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
+#include <system_error>
 
 namespace cgal_policies {
 
@@ -132,7 +133,7 @@ class Simplification_pipeline {
     check_streamed_options();
     mesh.clear();
     const auto start = std::chrono::steady_clock::now();
-    const internal::Spilled_input<Point> input(source, cell_counter());
+    const internal::Spilled_input<Point> input(source, m_options);
     Simplification_report report = streamed_report(input);
     internal::Part_progress progress(m_options.progress, input.faces(), report.target_faces);
     const std::optional<Mesh> input_as_cut;  // none: no bound out of core
@@ -233,7 +234,7 @@ class Simplification_pipeline {
   std::size_t cut_streamed(const Source& source, const std::filesystem::path& folder) const {
     check_streamed_options();
     const auto start = std::chrono::steady_clock::now();
-    const internal::Spilled_input<Point> input(source, cell_counter());
+    const internal::Spilled_input<Point> input(source, m_options);
     if (input.faces() == 0) return 0;
     internal::Job_header job;
     job.report = streamed_report(input);
@@ -242,11 +243,16 @@ class Simplification_pipeline {
     job.whole_diagonal = input.diagonal();
     job.whole_faces = input.faces();
     job.whole_vertices = input.vertices();
-    // Each cell's part, for stage 0 and, as the input near the cell, for the fit's first half.
+    // Each cell's part, for stage 0 and, as the input near the cell, for the fit's first half:
+    // the same file twice, linked where the folder's file system allows it.
     internal::for_each_in_parallel(job.report.parts, m_options.threads, [&](std::size_t c) {
       const Mesh part = input.part(input.spills(), c);
       internal::write_raw_mesh(part, internal::part_file(folder, 0, c));
-      if (m_options.fit) internal::write_raw_mesh(part, internal::near_part_file(folder, 1, c));
+      if (!m_options.fit) return;
+      std::error_code not_linked;
+      std::filesystem::create_hard_link(internal::part_file(folder, 0, c),
+                                        internal::near_part_file(folder, 1, c), not_linked);
+      if (not_linked) internal::write_raw_mesh(part, internal::near_part_file(folder, 1, c));
     });
     if (m_options.fit) {
       const internal::Spatial_cells shifted = input.shifted_cells();
@@ -394,11 +400,6 @@ class Simplification_pipeline {
     CGAL_precondition(m_options.two_sided_bound() == 0 && !m_options.on_collapse);
     CGAL_precondition(m_options.merge_distance == 0 && m_options.min_component <= 1);
     CGAL_precondition(!m_options.smoothing.bounded);
-  }
-
-  // The number of cells for an input of so many faces, as Spilled_input asks it.
-  auto cell_counter() const {
-    return [this](std::size_t faces) { return m_options.cell_count(faces); };
   }
 
   Simplification_report streamed_report(const internal::Spilled_input<Point>& input) const {

@@ -5,6 +5,7 @@
 #ifndef CGAL_POLICIES_INTERNAL_SPILLED_INPUT_H
 #define CGAL_POLICIES_INTERNAL_SPILLED_INPUT_H
 
+#include <cgal_policies/Simplification_options.h>
 #include <cgal_policies/internal/Hausdorff_input_surface.h>
 #include <cgal_policies/internal/Spatial_cells.h>
 #include <cgal_policies/internal/Spill_files.h>
@@ -24,11 +25,11 @@ namespace internal {
 template <class Point>
 class Spilled_input {
  public:
-  // Three passes over `source`; cell_count(faces) gives the number of cells for its face count.
-  template <class Source, class CellCount>
-  Spilled_input(const Source& source, const CellCount& cell_count)
+  // Three passes over `source`, cut into the cells `options` ask for its face count.
+  template <class Source>
+  Spilled_input(const Source& source, const Simplification_options& options)
       : m_input(read_streamed_input<Point>(source)),
-        m_cells(m_input.sample, cell_count(m_input.faces)),
+        m_cells(m_input.sample, options.cell_count(m_input.faces)),
         m_spills(m_cells.size()),
         m_vertex_cell(cut_into_spills(source, m_input, m_cells, m_spills)) {}
 

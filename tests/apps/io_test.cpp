@@ -1404,15 +1404,23 @@ std::string write_failure(const Mesh& mesh, const fs::path& path,
 // An OBJ of a glTF file, its library and images are written together or not at all: one that
 // cannot be renamed into place (a folder of the library's name is there) leaves none of them, and
 // one that would overwrite an image file of the input is refused before any is written.
+// textured_square() as `folder`/square.glb, read back, its second image the file `uri` names in
+// that folder, `file` (which holds "the input's").
+Mesh square_naming_an_image_file(const fs::path& folder, const std::string& uri,
+                                 const std::string& file, apps::Read_report& report) {
+  Gltf_builder square = gltf_fixtures::textured_square(0, 2);
+  square.model.images[1].uri = uri;
+  square.write(folder / "square.glb");
+  std::ofstream(folder / file) << "the input's";
+  return apps::read_triangle_mesh((folder / "square.glb").string(), &report,
+                                  apps::Corner_attribute_reading::keep);
+}
+
 TEST(Gltf, AnObjOfAGltfAndItsLibraryAreWrittenAllOrNothing) {
   const fs::path folder = scratch_folder("gltf_to_obj_failures");
-  Gltf_builder square = gltf_fixtures::textured_square(0, 2);
-  square.model.images[1].uri = "square_image0.png";
-  square.write(folder / "square.glb");
-  std::ofstream(folder / "square_image0.png") << "the input's";
   apps::Read_report report;
-  const Mesh mesh = apps::read_triangle_mesh((folder / "square.glb").string(), &report,
-                                             apps::Corner_attribute_reading::keep);
+  const Mesh mesh =
+      square_naming_an_image_file(folder, "square_image0.png", "square_image0.png", report);
 
   fs::create_directories(folder / "out" / "square.mtl");
   const std::string cause = write_failure(mesh, folder / "out" / "square.obj", report.materials);
@@ -1434,13 +1442,9 @@ TEST(Gltf, AnObjOfAGltfAndItsLibraryAreWrittenAllOrNothing) {
 // refused, the file as it was.
 TEST(Gltf, ImageUrisNameTheFilesTheyEncode) {
   const fs::path folder = scratch_folder("gltf_encoded_uris");
-  Gltf_builder square = gltf_fixtures::textured_square(0, 2);
-  square.model.images[1].uri = "a%20b_image0.png";
-  square.write(folder / "square.glb");
-  std::ofstream(folder / "a b_image0.png") << "the input's";
   apps::Read_report report;
-  const Mesh mesh = apps::read_triangle_mesh((folder / "square.glb").string(), &report,
-                                             apps::Corner_attribute_reading::keep);
+  const Mesh mesh =
+      square_naming_an_image_file(folder, "a%20b_image0.png", "a b_image0.png", report);
   fs::create_directories(folder / "out");
   apps::write_mesh_atomically(mesh, (folder / "out" / "square.obj").string(), report.materials);
   const std::string library = read_text(folder / "out" / "square.mtl");
