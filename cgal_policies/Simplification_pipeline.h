@@ -151,9 +151,13 @@ class Simplification_pipeline {
       const internal::Spatial_cells shifted = input.shifted_cells();
       std::optional<internal::Spill_files> shifted_spills;
       const auto input_parts = [&](const internal::Spatial_cells& by) {
-        if (&by == &input.cells()) return parts_of(input, input.spills());
-        input.spill_shifted(shifted, shifted_spills.emplace(report.parts));
-        return parts_of(input, *shifted_spills);
+        if (&by != &input.cells())
+          input.spill_shifted(shifted, shifted_spills.emplace(report.parts));
+        const internal::Spill_files& spills =
+            &by == &input.cells() ? input.spills() : *shifted_spills;
+        return [&input, &spills](std::size_t c) {
+          return internal::near_triangles(input.part(spills, c));
+        };
       };
       return internal::fit_by_cells(mesh, input.cells(), shifted, m_options.threads, fit,
                                     input_parts);
@@ -277,9 +281,10 @@ class Simplification_pipeline {
     Mesh part = internal::read_raw_mesh<Point>(internal::part_file(folder, stage, c));
     internal::Part_result result;
     if (stage > 0) {
-      result.fit = internal::fit_part(
-          part, internal::read_raw_mesh<Point>(internal::near_part_file(folder, stage, c)),
-          fit_stage_options(job.report, stage));
+      result.fit = internal::fit_part(part,
+                                      internal::near_triangles(internal::read_raw_mesh<Point>(
+                                          internal::near_part_file(folder, stage, c))),
+                                      fit_stage_options(job.report, stage));
     } else if (job.partitioned) {
       result.kept_locks = internal::simplify_part(
           part, job.report.target_faces, job.whole_faces, [&](Mesh& m, std::size_t target) {

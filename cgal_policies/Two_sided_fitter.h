@@ -50,6 +50,7 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #include <functional>
+#include <utility>
 
 namespace cgal_policies {
 
@@ -61,12 +62,15 @@ class Two_sided_fitter {
   explicit Two_sided_fitter(const TriangleMesh& input,
                             const Two_sided_fit_options& options = Two_sided_fit_options())
       : m_options(options), m_input(input) {
-    CGAL_precondition(options.rounds >= 0);
-    CGAL_precondition(options.trust_fraction > 0);
-    CGAL_precondition(options.tangent_weight >= 0 && options.tangent_weight <= 1);
-    CGAL_precondition(options.max_normal_angle_deg >= 0 && options.max_normal_angle_deg <= 180);
-    CGAL_precondition(options.tolerance >= 0);
-    CGAL_precondition(options.min_input_samples >= 1);
+    check_options();
+  }
+
+  // The input given by its triangles (a cell of a larger input: the fit by cells); unbounded.
+  explicit Two_sided_fitter(internal::Input_triangles input,
+                            const Two_sided_fit_options& options = Two_sided_fit_options())
+      : m_options(options), m_input(std::move(input)) {
+    CGAL_precondition(options.tolerance == 0);
+    check_options();
   }
 
   // `pinned`, when given, names the vertices that do not move.
@@ -115,6 +119,15 @@ class Two_sided_fitter {
   }
 
  private:
+  void check_options() const {
+    CGAL_precondition(m_options.rounds >= 0);
+    CGAL_precondition(m_options.trust_fraction > 0);
+    CGAL_precondition(m_options.tangent_weight >= 0 && m_options.tangent_weight <= 1);
+    CGAL_precondition(m_options.max_normal_angle_deg >= 0 && m_options.max_normal_angle_deg <= 180);
+    CGAL_precondition(m_options.tolerance >= 0);
+    CGAL_precondition(m_options.min_input_samples >= 1);
+  }
+
   Two_sided_fit_options m_options;
   internal::Fit_input<TriangleMesh> m_input;
 };

@@ -4,6 +4,7 @@
 #ifndef CGAL_POLICIES_INTERNAL_BORDER_CURVE_H
 #define CGAL_POLICIES_INTERNAL_BORDER_CURVE_H
 
+#include <cgal_policies/internal/Input_triangles.h>
 #include <cgal_policies/internal/mesh_geometry.h>
 
 #include <CGAL/AABB_segment_primitive.h>
@@ -13,7 +14,9 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -52,8 +55,62 @@ class Border_curve {
       m_next[i] = j;
       m_previous[j] = i;
     }
-    m_tree.rebuild(m_segments.begin(), m_segments.end());
-    m_tree.accelerate_distance_queries();
+    build_tree();
+  }
+
+  // The border of indexed triangles: the edges without a neighbour, in the order of the triangles
+  // and of their edges; the next border edge is found by turning around its end through the
+  // triangles, so that where two fans touch each keeps its own border.
+  explicit Border_curve(const Input_triangles& triangles) {
+    const auto& corners = triangles.corners;
+    const auto& neighbours = triangles.neighbours;
+    // Edge k of triangle t runs from corner k to corner k + 1; its border edge the other way.
+    std::vector<std::uint32_t> first_of(corners.size() + 1, 0);
+    for (std::size_t t = 0; t < corners.size(); ++t) {
+      first_of[t + 1] = first_of[t];
+      for (const int k : kEdgeOrder) {
+        if (neighbours[t][k] != kNoNeighbour) continue;
+        const Eigen::Vector3d& a = corners[t][(k + 1) % 3];
+        const Eigen::Vector3d& b = corners[t][k];
+        m_segments.emplace_back(Search_kernel::Point_3(a.x(), a.y(), a.z()),
+                                Search_kernel::Point_3(b.x(), b.y(), b.z()));
+        ++first_of[t + 1];
+      }
+    }
+    if (m_segments.empty()) return;
+    const auto segment_of = [&](std::size_t t, int k) {
+      std::uint32_t i = first_of[t];
+      for (const int j : kEdgeOrder) {
+        if (j == k) break;
+        i += neighbours[t][j] == kNoNeighbour;
+      }
+      return i;
+    };
+    m_next.resize(m_segments.size());
+    m_previous.resize(m_segments.size());
+    for (std::size_t t = 0; t < corners.size(); ++t)
+      for (int k = 0; k < 3; ++k) {
+        if (neighbours[t][k] != kNoNeighbour) continue;
+        // The border edge ends at corner k: turn around it, across the edges that enter it, to
+        // the edge entering it that has no neighbour; the next border edge is that one's.
+        std::size_t u = t;
+        int entering = (k + 2) % 3;
+        for (std::size_t turns = 0; neighbours[u][entering] != kNoNeighbour; ++turns) {
+          if (turns == corners.size()) throw std::logic_error("Border_curve: an open fan");
+          const std::size_t from = u;
+          const Eigen::Vector3d& end = corners[u][(entering + 1) % 3];
+          u = neighbours[u][entering];
+          int leaving = 0;
+          while (leaving < 3 && (neighbours[u][leaving] != from || corners[u][leaving] != end))
+            ++leaving;
+          if (leaving == 3) throw std::logic_error("Border_curve: neighbours that disagree");
+          entering = (leaving + 2) % 3;
+        }
+        const std::uint32_t i = segment_of(t, k), j = segment_of(u, entering);
+        m_next[i] = j;
+        m_previous[j] = i;
+      }
+    build_tree();
   }
 
   bool empty() const { return m_segments.empty(); }
@@ -86,6 +143,16 @@ class Border_curve {
   }
 
  private:
+  // The order in which a mesh built from the triangles (clean_triangle_mesh.h, as a cell's part is)
+  // numbers their border halfedges, those opposite edges 1, 2 and 0 of a triangle: the curve of a
+  // cell's triangles is that of its part, segment for segment, and so are the ties of its searches.
+  static constexpr std::array<int, 3> kEdgeOrder = {1, 2, 0};
+
+  void build_tree() {
+    m_tree.rebuild(m_segments.begin(), m_segments.end());
+    m_tree.accelerate_distance_queries();
+  }
+
   // End 0 (the source) or 1 (the target) of border edge i.
   Eigen::Vector3d point(std::uint32_t i, int end) const {
     const Search_kernel::Point_3& p = m_segments[i].vertex(end);

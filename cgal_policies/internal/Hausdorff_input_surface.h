@@ -5,6 +5,7 @@
 #define CGAL_POLICIES_INTERNAL_HAUSDORFF_INPUT_SURFACE_H
 
 #include <cgal_policies/internal/Flat_frame.h>
+#include <cgal_policies/internal/Input_triangles.h>
 #include <cgal_policies/internal/Triangle_bvh.h>
 #include <cgal_policies/internal/mesh_geometry.h>
 #include <cgal_policies/internal/patch_distance.h>
@@ -29,20 +30,11 @@ namespace internal {
 constexpr std::size_t kWalkSteps = 64;
 // The flatness argument gives up after this many input triangles.
 constexpr std::size_t kFlatSearchLimit = 2000;
-constexpr std::uint32_t kNoNeighbour = 0xffffffffu;
 
 // The length of the diagonal of `box`: D, of which a Hausdorff bound's tolerance is a fraction.
 inline double diagonal_length(const CGAL::Bbox_3& box) {
   return std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
                    CGAL::square(box.zmax() - box.zmin()));
-}
-
-template <typename Mesh, typename VertexPointMap>
-Triangle_corners face_corners(typename boost::graph_traits<Mesh>::face_descriptor f, const Mesh& tm,
-                              const VertexPointMap& vpm) {
-  const auto h = halfedge(f, tm);
-  return {internal::to_eigen(get(vpm, source(h, tm))), internal::to_eigen(get(vpm, target(h, tm))),
-          internal::to_eigen(get(vpm, target(next(h, tm), tm)))};
 }
 
 class Hausdorff_input_surface {
@@ -54,25 +46,18 @@ class Hausdorff_input_surface {
     m_diagonal = diagonal_length(
         CGAL::Polygon_mesh_processing::bbox(input, CGAL::parameters::vertex_point_map(vpm)));
     m_tolerance = tolerance_fraction * m_diagonal;
-    if (!indexed) return;
-    const auto index = get(CGAL::dynamic_face_property_t<std::uint32_t>(), input);
-    for (auto f : faces(input)) {
-      put(index, f, std::uint32_t(m_corners.size()));
-      m_corners.push_back(face_corners(f, input, vpm));
-    }
-    m_neighbours.resize(m_corners.size());
-    // Across edge k of input triangle i (corners k, k + 1) lies m_neighbours[i][k].
-    for (auto f : faces(input)) {
-      std::array<std::uint32_t, 3>& across = m_neighbours[get(index, f)];
-      int k = 0;
-      for (auto h : CGAL::halfedges_around_face(halfedge(f, input), input)) {
-        const auto g = face(opposite(h, input), input);
-        across[k++] =
-            g == boost::graph_traits<InputMesh>::null_face() ? kNoNeighbour : get(index, g);
-      }
-    }
-    m_flat_state.assign(m_corners.size(), {0, 0});
-    m_bvh = Triangle_bvh(m_corners);
+    if (indexed) index(input_triangles(input, vpm));
+  }
+
+  // Indexed triangles, with a tolerance of tolerance_fraction * D, D the diagonal of their box.
+  Hausdorff_input_surface(Input_triangles triangles, double tolerance_fraction) {
+    CGAL::Bbox_3 box;
+    for (const Triangle_corners& t : triangles.corners)
+      for (const Eigen::Vector3d& c : t)
+        box += CGAL::Bbox_3(c.x(), c.y(), c.z(), c.x(), c.y(), c.z());
+    m_diagonal = diagonal_length(box);
+    m_tolerance = tolerance_fraction * m_diagonal;
+    index(std::move(triangles));
   }
 
   Hausdorff_input_surface(const Hausdorff_input_surface&) = delete;
@@ -160,6 +145,13 @@ class Hausdorff_input_surface {
   }
 
  private:
+  void index(Input_triangles triangles) {
+    m_corners = std::move(triangles.corners);
+    m_neighbours = std::move(triangles.neighbours);
+    m_flat_state.assign(m_corners.size(), {0, 0});
+    m_bvh = Triangle_bvh(m_corners);
+  }
+
   double m_diagonal = 0;
   double m_tolerance = 0;
   std::vector<Triangle_corners> m_corners;

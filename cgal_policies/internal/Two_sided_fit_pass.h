@@ -49,10 +49,12 @@ class Two_sided_fit_pass {
         m_mesh(tm),
         m_mover(m_mesh, input.border(), input.surface().diagonal(), pinned, options.trust_fraction),
         m_matching(input.samples().size(), m_mesh.face_count()) {
-    if (m_options.tolerance > 0)
+    if (m_options.tolerance > 0) {
+      CGAL_precondition(input.mesh() != nullptr);
       m_bounded =
-          std::make_unique<Bounded_state>(input.mesh(), get(CGAL::vertex_point, input.mesh()), tm,
+          std::make_unique<Bounded_state>(*input.mesh(), get(CGAL::vertex_point, *input.mesh()), tm,
                                           m_options.tolerance, Hausdorff_bounded_options());
+    }
     m_mesh.refresh_faces();
     start_guards();
   }

@@ -18,6 +18,8 @@
 
 #include <cmath>
 #include <functional>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace cgal_policies {
@@ -53,23 +55,27 @@ void carry_corner_values(CGAL::Surface_mesh<Point>& mesh, const CGAL::Surface_me
 }
 
 // Fits `mesh` to `original` with `options`; with corner values, as the header says. The vertices
-// `pinned` names, when given, stay too.
-template <class Point>
+// `pinned` names, when given, stay too. `original` is a mesh, or the Input_triangles of one without
+// corner values (a cell's, for the fit by cells), against which no texture coordinate is solved.
+template <class Point, class Original>
 Two_sided_fit_report fit_carrying_corner_values(
-    CGAL::Surface_mesh<Point>& mesh, const CGAL::Surface_mesh<Point>& original,
-    Two_sided_fit_options options, const std::function<bool(CGAL::SM_Vertex_index)>& pinned = {}) {
+    CGAL::Surface_mesh<Point>& mesh, Original&& original, Two_sided_fit_options options,
+    const std::function<bool(CGAL::SM_Vertex_index)>& pinned = {}) {
   using Mesh = CGAL::Surface_mesh<Point>;
   if (!Corner_attributes<Point>(mesh).any_corner_values())
-    return Two_sided_fitter<Mesh>(original, options).fit(mesh, pinned);
+    return Two_sided_fitter<Mesh>(std::forward<Original>(original), options).fit(mesh, pinned);
   options.flips = false;
   const Mesh before = mesh;
   const Corner_attribute_carrier<Point> seams(mesh);
   const auto stays = [&](typename Mesh::Vertex_index v) {
     return seams.seam_edges_at(v) > 0 || (pinned && pinned(v));
   };
-  const Two_sided_fit_report report = Two_sided_fitter<Mesh>(original, options).fit(mesh, stays);
+  constexpr bool from_mesh = std::is_same_v<std::decay_t<Original>, Mesh>;
+  const Two_sided_fit_report report =
+      Two_sided_fitter<Mesh>(std::forward<Original>(original), options).fit(mesh, stays);
   carry_corner_values(mesh, before);
-  resolve_free_uvs(mesh, original, [&](typename Mesh::Vertex_index v) { return !stays(v); });
+  if constexpr (from_mesh)
+    resolve_free_uvs(mesh, original, [&](typename Mesh::Vertex_index v) { return !stays(v); });
   return report;
 }
 

@@ -38,14 +38,13 @@ std::size_t live_face_count(const FaceGraph& g) {
 }
 
 // About max(min_input_samples, min(input faces, kFitSamplesPerFace * output faces)) samples: a
-// grid on every input face when there are fewer faces, else the centroids of every k-th face,
-// weighted by k. None when the input has no area.
-template <typename TriangleMesh>
-std::vector<Fit_input_sample> sample_fit_input(const TriangleMesh& input, std::size_t output_faces,
-                                               std::size_t min_input_samples) {
+// grid on every input triangle when there are fewer triangles, else the centroids of every k-th
+// triangle, weighted by k. None when the input has no area.
+inline std::vector<Fit_input_sample> sample_fit_input(const Hausdorff_input_surface& input,
+                                                      std::size_t output_faces,
+                                                      std::size_t min_input_samples) {
   std::vector<Fit_input_sample> samples;
-  const auto vpm = get(CGAL::vertex_point, input);
-  const std::size_t face_count = live_face_count(input);
+  const std::size_t face_count = input.size();
   const std::size_t wanted =
       (std::max)(min_input_samples, (std::min)(face_count, kFitSamplesPerFace * output_faces));
   int level = 1;
@@ -53,11 +52,8 @@ std::vector<Fit_input_sample> sample_fit_input(const TriangleMesh& input, std::s
   const std::size_t stride = (std::max)(std::size_t(1), face_count / wanted);
   const std::vector<Eigen::Vector3d> grid = barycentric_grid(level);
   double total = 0;
-  std::uint32_t index = 0;
-  for (auto f : faces(input)) {
-    const std::uint32_t triangle = index++;
-    if (triangle % stride != 0) continue;
-    const Triangle_corners t = face_corners(f, input, vpm);
+  for (std::uint32_t triangle = 0; triangle < face_count; triangle += std::uint32_t(stride)) {
+    const Triangle_corners& t = input.corners(triangle);
     const double area = 0.5 * triangle_area_normal(t[0], t[1], t[2]).norm();
     for (const Eigen::Vector3d& b : grid)
       samples.push_back(

@@ -6,6 +6,7 @@
 #ifndef CGAL_POLICIES_INTERNAL_RUN_PARTITIONED_H
 #define CGAL_POLICIES_INTERNAL_RUN_PARTITIONED_H
 
+#include <cgal_policies/internal/Input_triangles.h>
 #include <cgal_policies/internal/Mesh_parts.h>
 #include <cgal_policies/internal/Policy_outcome.h>
 #include <cgal_policies/internal/Spatial_cells.h>
@@ -19,6 +20,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace cgal_policies {
@@ -128,15 +130,21 @@ inline void add_fit_counts(Two_sided_fit_report& to, const Two_sided_fit_report&
   to.refused_flips += from.refused_flips;
 }
 
-// Fits a part of the output to `near`, the same cell of the input, its cut vertices pinned.
+// Fits a part of the output to `near`, the triangles of the same cell of the input, its cut
+// vertices pinned.
 template <class Point>
-Two_sided_fit_report fit_part(CGAL::Surface_mesh<Point>& part,
-                              const CGAL::Surface_mesh<Point>& near,
+Two_sided_fit_report fit_part(CGAL::Surface_mesh<Point>& part, Input_triangles near,
                               const Two_sided_fit_options& options) {
-  if (part.number_of_faces() == 0 || near.number_of_faces() == 0) return {};
+  if (part.number_of_faces() == 0 || near.corners.empty()) return {};
   const auto lock = find_vertex_map<bool>(part, kLockedVertexMap);
-  return fit_carrying_corner_values(part, near, options,
+  return fit_carrying_corner_values(part, std::move(near), options,
                                     [&](CGAL::SM_Vertex_index v) { return (*lock)[v]; });
+}
+
+// The triangles of a cell's part of the input, held as a mesh (read from a file).
+template <class Point>
+Input_triangles near_triangles(const CGAL::Surface_mesh<Point>& near) {
+  return input_triangles(near, near.points());
 }
 
 // The report of a fit by cells from those of its cells: the moves and flips add up; the rounds
@@ -151,7 +159,7 @@ inline Two_sided_fit_report add_cell_fit_reports(const std::vector<Two_sided_fit
 }
 
 // The fitting pass by cells: each cell of the output fitted to the same cell of the input
-// (input_part(c), without corner values), on its own core, then the cells stitched back.
+// (input_part(c), its Input_triangles), on its own core, then the cells stitched back.
 template <class Point, class InputPart>
 Two_sided_fit_report fit_partitioned(CGAL::Surface_mesh<Point>& mesh, const Spatial_cells& cells,
                                      std::size_t threads, const Two_sided_fit_options& options,
@@ -186,7 +194,7 @@ inline Spatial_cells shifted_cells(std::vector<Eigen::Vector3d> centroids,
 
 // The fit by cells, in two halves of its rounds: over the run's `cells`, then over `shifted`, cut
 // elsewhere (kShiftedQuantile), so that the vertices pinned on the first cuts move too.
-// input_parts(cells) gives the callable that makes the input part of a cell of those cells.
+// input_parts(cells) gives the callable that makes the Input_triangles of a cell of those cells.
 template <class Point, class InputParts>
 Two_sided_fit_report fit_by_cells(CGAL::Surface_mesh<Point>& mesh, const Spatial_cells& cells,
                                   const Spatial_cells& shifted, std::size_t threads,
@@ -212,8 +220,10 @@ Two_sided_fit_report fit_by_cells(CGAL::Surface_mesh<Point>& mesh,
   const std::vector<Eigen::Vector3d> centroids = face_centroids(input, threads);
   const Spatial_cells shifted = shifted_cells(centroids, cells);
   return fit_by_cells(mesh, cells, shifted, threads, fit, [&](const Spatial_cells& by) {
-    return [&input, cell = face_cells(centroids, by, threads)](std::size_t c) {
-      return mesh_part(input, cell, std::uint32_t(c), false);
+    std::vector<std::uint32_t> cell = face_cells(centroids, by, threads);
+    std::vector<std::uint32_t> rank = ranks_in_cells(cell, by.size());
+    return [&input, cell = std::move(cell), rank = std::move(rank)](std::size_t c) {
+      return cell_triangles(input, cell, std::uint32_t(c), rank);
     };
   });
 }

@@ -276,15 +276,41 @@ Mesh two_squares() {
                         {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}});
 }
 
+// The curve of a mesh's border edges and that of its triangles (a fit by cells) alike.
 TEST(BorderCurve, APointSlidesAlongItsOwnBorderAndNeverJumpsToTheNextOne) {
+  namespace internal = cgal_policies::internal;
   const Mesh mesh = two_squares();
-  const cgal_policies::internal::Border_curve curve(mesh, get(CGAL::vertex_point, mesh));
-  // The other square's side is nearer the target; the point stays on its own side.
-  EXPECT_EQ(curve.nearest_along({1, 0.5, 0}, {1.09, 0.5, 0}, 0.3), Eigen::Vector3d(1, 0.5, 0));
-  EXPECT_NEAR(curve.distance({1.09, 0.5, 0}), 0.01, 1e-12);
-  // Within reach only its own edge: the corner of it; with more, along the next edge.
-  EXPECT_EQ(curve.nearest_along({0.5, 0, 0}, {0, 0.5, 0}, 0.3), Eigen::Vector3d(0, 0, 0));
-  EXPECT_EQ(curve.nearest_along({0.5, 0, 0}, {0, 0.5, 0}, 1.0), Eigen::Vector3d(0, 0.5, 0));
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  for (const internal::Border_curve& curve :
+       {internal::Border_curve(mesh, vpm),
+        internal::Border_curve(internal::input_triangles(mesh, vpm))}) {
+    // The other square's side is nearer the target; the point stays on its own side.
+    EXPECT_EQ(curve.nearest_along({1, 0.5, 0}, {1.09, 0.5, 0}, 0.3), Eigen::Vector3d(1, 0.5, 0));
+    EXPECT_NEAR(curve.distance({1.09, 0.5, 0}), 0.01, 1e-12);
+    // Within reach only its own edge: the corner of it; with more, along the next edge.
+    EXPECT_EQ(curve.nearest_along({0.5, 0, 0}, {0, 0.5, 0}, 0.3), Eigen::Vector3d(0, 0, 0));
+    EXPECT_EQ(curve.nearest_along({0.5, 0, 0}, {0, 0.5, 0}, 1.0), Eigen::Vector3d(0, 0.5, 0));
+  }
+}
+
+// Triangles of a cell may touch at a point only, two fans of a vertex: each keeps its own border,
+// as the cell's part, which splits the vertex, does.
+TEST(BorderCurve, TwoFansTouchingAtAPointKeepTheirOwnBorders) {
+  namespace internal = cgal_policies::internal;
+  internal::Input_triangles fans;
+  fans.corners = {
+      {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(1, 1, 0)},
+      {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 1, 0), Eigen::Vector3d(0, 1, 0)},
+      {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(-1, 0, 0), Eigen::Vector3d(-1, -1, 0)}};
+  const std::uint32_t none = internal::kNoNeighbour;
+  fans.neighbours = {{none, none, 1}, {0, none, none}, {none, none, none}};
+  const internal::Border_curve curve(fans);
+  // From the middle of the first fan's edge (0, 0)-(1, 0), the target near the other fan: along
+  // its own border the nearest point is the shared corner, with any reach.
+  EXPECT_EQ(curve.nearest_along({0.5, 0, 0}, {-0.5, -0.25, 0}, 100), Eigen::Vector3d(0, 0, 0));
+  // From the second fan's edge, its own edge (-1, -1)-(0, 0) holds the nearest point.
+  EXPECT_EQ(curve.nearest_along({-0.5, 0, 0}, {-0.25, -0.5, 0}, 100),
+            Eigen::Vector3d(-0.375, -0.375, 0));
 }
 
 // Two unit right triangles in the plane z = 0, the second two units along x.

@@ -30,6 +30,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cmath>
@@ -666,6 +667,30 @@ TEST(SpatialCells, SplitsAtTheMediansOfTheLongestSides) {
 
 // A closed sphere with texture coordinates cut into eight parts and stitched back as it was: every
 // point, every face and every corner's values, and closed again.
+// The fit by cells reads a cell's triangles from the whole input, where a job reads its part: the
+// same corners, neighbours and order.
+TEST(MeshParts, ACellsTrianglesAreThoseOfItsPart) {
+  namespace internal = cgal_policies::internal;
+  for (const Mesh& mesh : {loop_sphere(3), flat_grid(12)}) {
+    const internal::Spatial_cells cells(internal::face_centroids(mesh, 1), 4);
+    const std::vector<std::uint32_t> cell = internal::face_cells(mesh, cells, 1);
+    const std::vector<std::uint32_t> rank = internal::ranks_in_cells(cell, cells.size());
+    std::size_t faces = 0, borders = 0;
+    for (std::uint32_t c = 0; c < cells.size(); ++c) {
+      const Mesh part = internal::mesh_part(mesh, cell, c, false);
+      const internal::Input_triangles expected = internal::near_triangles(part);
+      const internal::Input_triangles got = internal::cell_triangles(mesh, cell, c, rank);
+      EXPECT_EQ(got.corners, expected.corners);
+      EXPECT_EQ(got.neighbours, expected.neighbours);
+      faces += got.corners.size();
+      for (const auto& across : got.neighbours)
+        borders += std::size_t(std::count(across.begin(), across.end(), internal::kNoNeighbour));
+    }
+    EXPECT_EQ(faces, mesh.number_of_faces());
+    EXPECT_GT(borders, 0u);
+  }
+}
+
 TEST(MeshParts, StitchingTheCutPartsGivesTheMeshBack) {
   namespace internal = cgal_policies::internal;
   Mesh sphere = loop_sphere(3);
