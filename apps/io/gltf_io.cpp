@@ -110,24 +110,71 @@ struct Placed_mesh {
 // Deeper hierarchies are refused rather than risking the stack on a forged file.
 constexpr std::size_t kMaxNodeDepth = 1000;
 
-// `on_path` marks the node's ancestors, so that a cycle is found at once.
+// The nodes that stand for `node` at each level of detail, finest first: itself, then the nodes
+// its MSFT_lod names, each of which must hold a mesh; itself alone without the extension.
+std::vector<int> lod_nodes(const std::string& path, const tinygltf::Model& model, int node) {
+  std::vector<int> nodes = {node};
+  const tinygltf::ExtensionMap& extensions = model.nodes[std::size_t(node)].extensions;
+  const auto lod = extensions.find("MSFT_lod");
+  if (lod == extensions.end()) return nodes;
+  const std::string where = "node " + std::to_string(node) + "'s MSFT_lod";
+  // Has() checks that the value is an object, which Get(key) asserts.
+  if (!lod->second.Has("ids") || !lod->second.Get("ids").IsArray())
+    fail(path, where + " has no array of node indices (ids)");
+  const tinygltf::Value& ids = lod->second.Get("ids");
+  for (std::size_t i = 0; i < ids.ArrayLen(); ++i) {
+    const tinygltf::Value& id = ids.Get(int(i));
+    if (!id.IsNumber()) fail(path, where + " names a node by something other than a number");
+    const double index = id.GetNumberAsDouble();
+    if (!(index >= 0 && index < double(model.nodes.size()) && index == std::floor(index))) {
+      std::ostringstream text;
+      text << index;
+      fail(path, where + " names node " + text.str() + ", which does not exist");
+    }
+    if (model.nodes[std::size_t(index)].mesh < 0)
+      fail(path, where + " names node " + std::to_string(int(index)) + ", which has no mesh");
+    nodes.push_back(int(index));
+  }
+  return nodes;
+}
+
+// Which level of detail placed_meshes places: level 0 is the scene as it stands; at level k > 0,
+// when `follow_lod`, each node carrying MSFT_lod gives way to the k-th node it names, or to its
+// coarsest when it names fewer. `levels` gets the most levels a node reached offers.
+struct Lod_walk {
+  std::size_t level = 0;
+  bool follow_lod = false;
+  std::size_t levels = 1;
+};
+
+// `on_path` marks the node's ancestors, so that a cycle is found at once. A node standing in for
+// another takes its place under the same parent, with its own transform and children.
 void place_node(const std::string& path, const tinygltf::Model& model, int node,
-                const Matrix& parent, std::vector<char>& on_path, std::size_t depth,
+                const Matrix& parent, std::vector<char>& on_path, std::size_t depth, Lod_walk& walk,
                 std::vector<Placed_mesh>& placed) {
   if (node < 0 || std::size_t(node) >= model.nodes.size())
     fail(path, "node " + std::to_string(node) + " does not exist");
-  if (on_path[std::size_t(node)]) fail(path, "the node hierarchy has a cycle");
   if (depth > kMaxNodeDepth)
     fail(path, "the node hierarchy is deeper than " + std::to_string(kMaxNodeDepth));
-  const tinygltf::Node& n = model.nodes[std::size_t(node)];
+  int shown = node;
+  if (walk.follow_lod) {
+    const std::vector<int> stand_ins = lod_nodes(path, model, node);
+    walk.levels = std::max(walk.levels, stand_ins.size());
+    shown = stand_ins[std::min(walk.level, stand_ins.size() - 1)];
+  }
+  if (on_path[std::size_t(node)] || on_path[std::size_t(shown)])
+    fail(path, "the node hierarchy has a cycle");
+  const tinygltf::Node& n = model.nodes[std::size_t(shown)];
   const Matrix world = product(parent, local_matrix(n));
   if (n.mesh >= 0) placed.push_back({n.mesh, world});
-  on_path[std::size_t(node)] = 1;
-  for (int child : n.children) place_node(path, model, child, world, on_path, depth + 1, placed);
-  on_path[std::size_t(node)] = 0;
+  on_path[std::size_t(node)] = on_path[std::size_t(shown)] = 1;
+  for (int child : n.children)
+    place_node(path, model, child, world, on_path, depth + 1, walk, placed);
+  on_path[std::size_t(node)] = on_path[std::size_t(shown)] = 0;
 }
 
-std::vector<Placed_mesh> placed_meshes(const std::string& path, const tinygltf::Model& model) {
+std::vector<Placed_mesh> placed_meshes(const std::string& path, const tinygltf::Model& model,
+                                       Lod_walk& walk) {
   std::vector<Placed_mesh> placed;
   if (model.scenes.empty()) {
     for (std::size_t m = 0; m < model.meshes.size(); ++m) placed.push_back({int(m), kIdentity});
@@ -138,7 +185,7 @@ std::vector<Placed_mesh> placed_meshes(const std::string& path, const tinygltf::
     fail(path, "scene " + std::to_string(scene) + " does not exist");
   std::vector<char> on_path(model.nodes.size(), 0);
   for (int node : model.scenes[std::size_t(scene)].nodes)
-    place_node(path, model, node, kIdentity, on_path, 0, placed);
+    place_node(path, model, node, kIdentity, on_path, 0, walk, placed);
   return placed;
 }
 
@@ -618,6 +665,82 @@ std::shared_ptr<const tinygltf::Model> kept_looks(tinygltf::Model& model, const 
   return looks;
 }
 
+// The file's model, its compressed views and primitives decoded; Io_error as read_gltf says.
+tinygltf::Model loaded_model(const std::string& path, bool binary) {
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(keep_image_bytes, nullptr);
+  tinygltf::Model model;
+  std::string error, warning;
+  bool loaded = false;
+  try {
+    std::ifstream file(path, std::ios::binary);
+    if (!file) fail(path, "cannot open");
+    const std::string bytes = with_loadable_draco_indices(
+        with_loadable_fallback_buffers(
+            std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()),
+            binary),
+        binary);
+    if (binary) check_glb_chunks(path, bytes);
+    if (bytes.size() > std::numeric_limits<unsigned>::max())
+      fail(path, "cannot parse: larger than tinygltf reads (4 GiB)");
+    const std::string folder = fs::absolute(path).parent_path().string();
+    loaded = binary
+                 ? loader.LoadBinaryFromMemory(&model, &error, &warning,
+                                               reinterpret_cast<const unsigned char*>(bytes.data()),
+                                               static_cast<unsigned>(bytes.size()), folder)
+                 : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(),
+                                              static_cast<unsigned>(bytes.size()), folder);
+  } catch (const Io_error&) {
+    throw;
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  if (!loaded)
+    fail(path,
+         "cannot parse: " + (error.empty() && warning.empty() ? std::string("not a valid glTF file")
+                                                              : one_line(error + warning)));
+  for (const std::string& extension : model.extensionsRequired)
+    if (std::find(kDecodedExtensions.begin(), kDecodedExtensions.end(), extension) ==
+        kDecodedExtensions.end())
+      fail(path, "requires the extension " + extension + ", which this reader does not support");
+
+  decode_meshopt_views(path, model);
+  decode_draco_primitives(path, model);
+  return model;
+}
+
+// The soup of the meshes `placed`.
+Polygon_soup soup_of(const std::string& path, const tinygltf::Model& model,
+                     const std::vector<Placed_mesh>& placed) {
+  Soup_builder builder(path, model);
+  for (const Placed_mesh& mesh : placed) {
+    if (mesh.mesh < 0 || std::size_t(mesh.mesh) >= model.meshes.size())
+      fail(path, "mesh " + std::to_string(mesh.mesh) + " does not exist");
+    const std::vector<tinygltf::Primitive>& primitives =
+        model.meshes[std::size_t(mesh.mesh)].primitives;
+    for (std::size_t p = 0; p < primitives.size(); ++p)
+      builder.add_primitive(
+          primitives[p], mesh.world,
+          "mesh " + std::to_string(mesh.mesh) + " primitive " + std::to_string(p));
+  }
+  return std::move(builder).soup();
+}
+
+// read_gltf_levels, or with `follow_lod` false the finest level alone, as read_gltf reads it.
+std::vector<Gltf_soup> read_levels(const std::string& path, bool binary, bool follow_lod) {
+  tinygltf::Model model = loaded_model(path, binary);
+  Lod_walk walk;
+  walk.follow_lod = follow_lod;
+  std::vector<Gltf_soup> levels;
+  // Level 0's walk finds how many levels there are.
+  for (; walk.level < walk.levels; ++walk.level)
+    levels.push_back({soup_of(path, model, placed_meshes(path, model, walk)), nullptr});
+  // Last: the soups above name the materials, which the looks take away.
+  const std::shared_ptr<const tinygltf::Model> looks = kept_looks(model, path);
+  for (Gltf_soup& level : levels) level.looks = looks;
+  return levels;
+}
+
 // ---- Writing ---------------------------------------------------------------------------------
 
 // Appends `bytes` to buffer 0 as a bufferView of its own, at an offset that is a multiple of 4
@@ -943,58 +1066,11 @@ void declare_extension(tinygltf::Model& model, const std::string& extension, boo
 }  // namespace
 
 Gltf_soup read_gltf(const std::string& path, bool binary) {
-  tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(keep_image_bytes, nullptr);
-  tinygltf::Model model;
-  std::string error, warning;
-  bool loaded = false;
-  try {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) fail(path, "cannot open");
-    const std::string bytes = with_loadable_draco_indices(
-        with_loadable_fallback_buffers(
-            std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()),
-            binary),
-        binary);
-    if (binary) check_glb_chunks(path, bytes);
-    if (bytes.size() > std::numeric_limits<unsigned>::max())
-      fail(path, "cannot parse: larger than tinygltf reads (4 GiB)");
-    const std::string folder = fs::absolute(path).parent_path().string();
-    loaded = binary
-                 ? loader.LoadBinaryFromMemory(&model, &error, &warning,
-                                               reinterpret_cast<const unsigned char*>(bytes.data()),
-                                               static_cast<unsigned>(bytes.size()), folder)
-                 : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(),
-                                              static_cast<unsigned>(bytes.size()), folder);
-  } catch (const Io_error&) {
-    throw;
-  } catch (const std::exception& e) {
-    error = e.what();
-  }
-  if (!loaded)
-    fail(path,
-         "cannot parse: " + (error.empty() && warning.empty() ? std::string("not a valid glTF file")
-                                                              : one_line(error + warning)));
-  for (const std::string& extension : model.extensionsRequired)
-    if (std::find(kDecodedExtensions.begin(), kDecodedExtensions.end(), extension) ==
-        kDecodedExtensions.end())
-      fail(path, "requires the extension " + extension + ", which this reader does not support");
+  return std::move(read_levels(path, binary, false).front());
+}
 
-  decode_meshopt_views(path, model);
-  decode_draco_primitives(path, model);
-  Soup_builder builder(path, model);
-  for (const Placed_mesh& placed : placed_meshes(path, model)) {
-    if (placed.mesh < 0 || std::size_t(placed.mesh) >= model.meshes.size())
-      fail(path, "mesh " + std::to_string(placed.mesh) + " does not exist");
-    const tinygltf::Mesh& mesh = model.meshes[std::size_t(placed.mesh)];
-    for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
-      builder.add_primitive(
-          mesh.primitives[p], placed.world,
-          "mesh " + std::to_string(placed.mesh) + " primitive " + std::to_string(p));
-  }
-  Gltf_soup read{std::move(builder).soup(), nullptr};
-  read.looks = kept_looks(model, path);
-  return read;
+std::vector<Gltf_soup> read_gltf_levels(const std::string& path, bool binary) {
+  return read_levels(path, binary, true);
 }
 
 std::string gltf_bytes(const std::vector<Lod_level>& levels, bool binary, Gltf_encoding encoding,

@@ -39,8 +39,17 @@ struct Gltf_soup {
 // input, "<path>: <cause>") for a file tinygltf cannot load (malformed JSON or GLB, a buffer file
 // missing), a required extension other than those three and KHR_texture_transform, compressed
 // data that do not decode, an accessor or index out of range, a position, normal, texture
-// coordinate or colour that is not finite.
+// coordinate or colour that is not finite. A node's MSFT_lod is not followed: this is the finest
+// level (read_gltf_levels reads them all).
 Gltf_soup read_gltf(const std::string& path, bool binary);
+
+// The levels of detail of the file at `path`, finest first, each read as read_gltf reads the file,
+// all sharing one `looks`. Level 0 is what read_gltf reads. Level k puts, in place of each node
+// the scene reaches that carries MSFT_lod (as gltf_bytes writes it), the k-th node its `ids` name,
+// or the last one when it names fewer: that node goes under the same parent, with its own
+// transform and children. Without MSFT_lod, one level. Throws as read_gltf does, and for an
+// MSFT_lod without an array `ids`, or whose ids name a node that does not exist or has no mesh.
+std::vector<Gltf_soup> read_gltf_levels(const std::string& path, bool binary);
 
 // The bytes of a glTF file (GLB when `binary`) holding `levels`, each a mesh of its own and a node
 // holding it: one vertex per wedge (Wedge_mesh.h), one primitive per material in the order of the

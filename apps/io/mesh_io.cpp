@@ -174,6 +174,28 @@ Polygon_soup read_soup(const std::string& path, const std::string& extension,
                                : parse_ply(path, bytes);
 }
 
+// The mesh of `soup`, read from `path` (any format but STL; a glTF file's `gltf_looks`), as
+// read_triangle_mesh makes it; its errors name `source`.
+Mesh mesh_of_soup(const std::string& path, const std::string& source, Polygon_soup& soup,
+                  std::shared_ptr<const tinygltf::Model> gltf_looks, Read_report* report,
+                  Corner_attribute_reading attributes) {
+  if (attributes == Corner_attribute_reading::drop)
+    return triangle_mesh_from_soup(source, soup.points, soup.polygons, report);
+  const Corner_tables& tables = soup.corners;
+  if (lower_extension(path) == ".ply" &&
+      !(tables.uvs.empty() && tables.normals.empty() && tables.colors.empty()))
+    join_equal_points(soup);
+  Mesh mesh = triangle_mesh_from_soup(source, soup.points, soup.polygons, report, &soup.corners);
+  if (report && Attributes(mesh).materials) {
+    const fs::path folder = fs::absolute(path).parent_path();
+    for (const std::string& library : soup.corners.material_libraries)
+      report->materials.libraries.push_back((folder / library).lexically_normal().string());
+    report->materials.names = soup.corners.material_names;
+    report->materials.gltf = std::move(gltf_looks);
+  }
+  return mesh;
+}
+
 bool write_bytes(const std::string& path, const std::string& bytes) {
   std::ofstream file(path, std::ios::binary);
   file.write(bytes.data(), std::streamsize(bytes.size()));
@@ -273,21 +295,7 @@ Mesh read_triangle_mesh(const std::string& path, Read_report* report,
   if (extension != ".stl") {
     std::shared_ptr<const tinygltf::Model> gltf_looks;
     Polygon_soup soup = read_soup(path, extension, gltf_looks);
-    if (attributes == Corner_attribute_reading::drop)
-      return triangle_mesh_from_soup(path, soup.points, soup.polygons, report);
-    const Corner_tables& tables = soup.corners;
-    if (extension == ".ply" &&
-        !(tables.uvs.empty() && tables.normals.empty() && tables.colors.empty()))
-      join_equal_points(soup);
-    Mesh mesh = triangle_mesh_from_soup(path, soup.points, soup.polygons, report, &soup.corners);
-    if (report && Attributes(mesh).materials) {
-      const fs::path folder = fs::absolute(path).parent_path();
-      for (const std::string& library : soup.corners.material_libraries)
-        report->materials.libraries.push_back((folder / library).lexically_normal().string());
-      report->materials.names = soup.corners.material_names;
-      report->materials.gltf = std::move(gltf_looks);
-    }
-    return mesh;
+    return mesh_of_soup(path, path, soup, std::move(gltf_looks), report, attributes);
   }
   std::vector<Point> points;
   std::vector<Polygon> polygons;
@@ -324,6 +332,31 @@ Mesh triangle_mesh_from_soup(const std::string& path, std::vector<Point>& points
   }
   if (report) report->repairs = repairs;
   return mesh;
+}
+
+std::vector<Mesh> read_lod_chain(const std::string& path, Read_report* report,
+                                 Corner_attribute_reading attributes) {
+  std::vector<Mesh> levels;
+  if (!is_gltf_file(path)) {
+    levels.push_back(read_triangle_mesh(path, report, attributes));
+    return levels;
+  }
+  check_readable_file(path);
+  std::vector<Gltf_soup> soups = read_gltf_levels(path, lower_extension(path) == ".glb");
+  for (std::size_t k = 0; k < soups.size(); ++k) {
+    const std::string level = "level " + std::to_string(k);
+    Read_report level_report;
+    levels.push_back(mesh_of_soup(path, k == 0 ? path : path + " (" + level + ")", soups[k].soup,
+                                  soups[k].looks, report ? &level_report : nullptr, attributes));
+    if (!report) continue;
+    if (k == 0) {
+      *report = std::move(level_report);  // its materials are every level's
+      continue;
+    }
+    for (const std::string& repair : level_report.repairs)
+      report->repairs.push_back(level + ": " + repair);
+  }
+  return levels;
 }
 
 std::vector<std::string> write_mesh_atomically(const Mesh& mesh, const std::string& path,

@@ -57,6 +57,16 @@ bool writes_corner_attributes(const std::string& path);
 Mesh read_triangle_mesh(const std::string& path, Read_report* report = nullptr,
                         Corner_attribute_reading attributes = Corner_attribute_reading::drop);
 
+// The levels of detail of the file at `path`, finest first, each read as read_triangle_mesh reads
+// a mesh: a glTF file's levels (read_gltf_levels, gltf_io.h: its nodes' MSFT_lod, as
+// write_lod_chain_atomically writes them); any other file, or a glTF file without MSFT_lod, is one
+// level. `report` gets level 0's materials, which every level shares, and every level's repairs,
+// those of level k > 0 after "level k: ". Throws Io_error (unreadable input) as read_triangle_mesh
+// and read_gltf_levels do; an error in level k > 0's mesh names "<path> (level k)".
+std::vector<Mesh> read_lod_chain(
+    const std::string& path, Read_report* report = nullptr,
+    Corner_attribute_reading attributes = Corner_attribute_reading::drop);
+
 // The reader's second half: checks the soup (faces, finite points, indices in range), splits its
 // polygons into triangles (soup_repair.h: none is refused for its shape), builds the mesh directly
 // when the triangles are a clean mesh, and otherwise repairs them first. Errors name `source`, as

@@ -888,10 +888,10 @@ std::size_t seam_edge_count(const Mesh& mesh) {
   return seams;
 }
 
-// six_sided_cube() moved off the float grid, each side its own texture chart, its normal, its
-// colour and one of two materials.
-Mesh painted_cube() {
-  Mesh mesh = test_meshes::six_sided_cube();
+// six_sided_cube(per_side) moved off the float grid, each side its own texture chart, its normal,
+// its colour and one of two materials.
+Mesh painted_cube(int per_side = 4) {
+  Mesh mesh = test_meshes::six_sided_cube(per_side);
   for (const auto v : mesh.vertices())
     mesh.point(v) = mesh.point(v) + apps::Kernel::Vector_3(0.1, 0.2, 1.0 / 3);
   const Attributes a = Attributes::add(mesh, {true, true, true, true});
@@ -1870,6 +1870,107 @@ TEST(Gltf, NodeTransformsPlaceTurnAndMirror) {
       EXPECT_NEAR((*a.normals)[h].y(), 0, 1e-15);
       EXPECT_NEAR((*a.normals)[h].z(), 1, 1e-15);
     }
+  fs::remove_all(folder);
+}
+
+// Three painted cubes of 192, 48 and 12 faces (painted_cube(4), (2), (1)), side by side along x,
+// written as one chain by write_lod_chain_atomically read back as three levels, finest first, each
+// with its faces and corners: through float as float32 (.glb), within a step as quantized (.gltf;
+// each level's node moves its positions from its own box's corner, so the node standing in for
+// another must keep its own transform). read_triangle_mesh, which does not follow MSFT_lod, reads
+// the finest level alone.
+TEST(Gltf, ALodChainReadsBackAsItsLevelsWithTheirCorners) {
+  const fs::path folder = scratch_folder("gltf_lod_chain");
+  const auto moved_along_x = [](Mesh mesh, double x) {
+    for (const auto v : mesh.vertices())
+      mesh.point(v) = mesh.point(v) + apps::Kernel::Vector_3(x, 0, 0);
+    return mesh;
+  };
+  const std::vector<Mesh> cubes = {painted_cube(4), moved_along_x(painted_cube(2), 5),
+                                   moved_along_x(painted_cube(1), 10)};
+  const std::vector<std::size_t> faces = {192, 48, 12};
+  const std::vector<apps::Lod_level> levels = {{&cubes[0], 0.5}, {&cubes[1], 0.2}, {&cubes[2], 0}};
+  const apps::Material_references names{{}, {"even", "odd"}, nullptr};
+  // Every cube spans 4 on each axis: one step of the quantized positions.
+  const double step = 4.0 / 65535;
+  for (const auto& [name, encoding] :
+       {std::make_pair("chain.glb", apps::Gltf_encoding::float32),
+        std::make_pair("chain.gltf", apps::Gltf_encoding::quantized)}) {
+    SCOPED_TRACE(name);
+    const std::string out = (folder / name).string();
+    apps::write_lod_chain_atomically(levels, out, names, encoding);
+    apps::Read_report report;
+    const std::vector<Mesh> read =
+        apps::read_lod_chain(out, &report, apps::Corner_attribute_reading::keep);
+    ASSERT_EQ(read.size(), 3u);
+    EXPECT_TRUE(report.repairs.empty());
+    EXPECT_EQ(report.materials.names, names.names);
+    for (std::size_t k = 0; k < read.size(); ++k) {
+      SCOPED_TRACE("level " + std::to_string(k));
+      EXPECT_EQ(read[k].number_of_faces(), faces[k]);
+      if (encoding == apps::Gltf_encoding::float32)
+        EXPECT_EQ(sorted(face_corners(read[k])), sorted(through_float(face_corners(cubes[k]))));
+      else  // texture coordinates past [-1, 1] stay float: u runs up to 6
+        expect_within_steps(cubes[k], read[k], step, 6.0 / (1 << 24));
+    }
+    EXPECT_EQ(apps::read_triangle_mesh(out).number_of_faces(), faces[0]);
+  }
+  fs::remove_all(folder);
+}
+
+// A glTF file without MSFT_lod, and a file of any other format, is one level.
+TEST(Gltf, AFileWithoutMsftLodIsOneLevel) {
+  const fs::path folder = scratch_folder("gltf_one_level");
+  const Mesh cube = painted_cube(2);
+  for (const std::string name : {"cube.glb", "cube.obj"}) {
+    SCOPED_TRACE(name);
+    apps::write_mesh_atomically(cube, (folder / name).string());
+    const std::vector<Mesh> read = apps::read_lod_chain((folder / name).string());
+    ASSERT_EQ(read.size(), 1u);
+    EXPECT_EQ(read[0].number_of_faces(), 48u);
+  }
+  fs::remove_all(folder);
+}
+
+// Each bad MSFT_lod of a three-level chain is one bad-input line naming the file and the cause;
+// read_triangle_mesh, which does not follow the extension, still reads the finest level.
+TEST(Gltf, BadMsftLodReferencesAreOneBadInputLine) {
+  const fs::path folder = scratch_folder("gltf_bad_lod");
+  const std::vector<Mesh> cubes = {painted_cube(4), painted_cube(2), painted_cube(1)};
+  apps::write_lod_chain_atomically({{&cubes[0], 0.5}, {&cubes[1], 0.2}, {&cubes[2], 0}},
+                                   (folder / "chain.gltf").string());
+  const nlohmann::json chain = gltf_json(folder / "chain.gltf");
+  ASSERT_EQ(chain["nodes"][0]["extensions"]["MSFT_lod"]["ids"], std::vector<int>({1, 2}));
+  const std::string bad = (folder / "bad.gltf").string();
+  struct Bad_lod {
+    nlohmann::json lod;
+    std::string cause;
+  };
+  for (const Bad_lod& c : {
+           Bad_lod{{{"ids", {1, 7}}}, "node 0's MSFT_lod names node 7, which does not exist"},
+           Bad_lod{{{"ids", {-1}}}, "node 0's MSFT_lod names node -1, which does not exist"},
+           Bad_lod{{{"ids", {1.5}}}, "node 0's MSFT_lod names node 1.5, which does not exist"},
+           Bad_lod{{{"ids", {1, 3}}}, "node 0's MSFT_lod names node 3, which has no mesh"},
+           Bad_lod{{{"ids", {"1"}}},
+                   "node 0's MSFT_lod names a node by something other than a number"},
+           Bad_lod{{{"ids", 1}}, "node 0's MSFT_lod has no array of node indices (ids)"},
+           Bad_lod{nlohmann::json::object(),
+                   "node 0's MSFT_lod has no array of node indices (ids)"},
+       }) {
+    SCOPED_TRACE(c.cause);
+    nlohmann::json edited = chain;
+    edited["nodes"].push_back(nlohmann::json::object());  // node 3, without a mesh
+    edited["nodes"][0]["extensions"]["MSFT_lod"] = c.lod;
+    std::ofstream(bad) << edited.dump();
+    try {
+      apps::read_lod_chain(bad);
+      ADD_FAILURE() << "read";
+    } catch (const apps::Io_error& e) {
+      EXPECT_EQ(e.kind(), apps::Io_error::Kind::unreadable_input);
+      EXPECT_EQ(std::string(e.what()), bad + ": " + c.cause);
+    }
+    EXPECT_EQ(apps::read_triangle_mesh(bad).number_of_faces(), 192u);
+  }
   fs::remove_all(folder);
 }
 

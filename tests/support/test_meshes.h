@@ -98,9 +98,10 @@ inline Mesh loop_sphere(int levels) {
   return mesh;
 }
 
-// A cube of side 4 with a 4 x 4 grid on each of its six sides (192 triangles, closed), side k
-// made of the points on_side(k, s, t) below, facing out.
-inline Mesh six_sided_cube() {
+// A cube of side 4 with an n x n grid on each of its six sides (12 n^2 triangles, closed; n 1, 2
+// or 4: 192 triangles by default), side k made of the points on_side(k, s, t) below, facing out.
+inline Mesh six_sided_cube(int n = 4) {
+  const int step = 4 / n;
   std::vector<Point> points;
   std::vector<std::array<int, 3>> triangles;
   std::map<std::array<int, 3>, int> index;
@@ -127,10 +128,10 @@ inline Mesh six_sided_cube() {
     }
   };
   for (int k = 0; k < 6; ++k)
-    for (int s = 0; s < 4; ++s)
-      for (int t = 0; t < 4; ++t) {
+    for (int s = 0; s < 4; s += step)
+      for (int t = 0; t < 4; t += step) {
         const auto corner = [&](int ds, int dt) {
-          const auto q = on_side(k, s + ds, t + dt);
+          const auto q = on_side(k, s + ds * step, t + dt * step);
           return point_index(q[0], q[1], q[2]);
         };
         triangles.push_back({corner(0, 0), corner(1, 0), corner(1, 1)});
