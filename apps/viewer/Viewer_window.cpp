@@ -23,6 +23,8 @@
 #include <memory>
 #include <optional>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace apps {
 namespace {
@@ -38,10 +40,8 @@ struct Simplified {
 
 class Viewer {
  public:
-  Viewer(const Gl_functions& gl, const Mesh& mesh, const Viewer_start& start)
-      : m_mesh(mesh),
-        m_original(Indexed_mesh::from_mesh(mesh)),
-        m_frame(Mesh_frame::of(m_original)),
+  Viewer(const Gl_functions& gl, const std::vector<Mesh>& levels, const Viewer_start& start)
+      : m_levels(levels),
         m_title(start.title),
         m_policy(start.policy),
         m_options(start.options),
@@ -49,17 +49,12 @@ class Viewer {
         m_view(start.view),
         m_heat_map(start.heat_map),
         m_texture(start.texture),
-        m_corner_values(cgal_policies::Corner_attributes<Point>(mesh).any_corner_values()),
         m_fit(start.options.fit),
         m_renderer(gl) {
-    m_target =
-        std::max<std::size_t>(1, std::size_t(std::llround(start.ratio * double(input_faces()))));
-    if (!show_corner_values(m_renderer, Scene_renderer::left, m_mesh, m_frame, m_texture))
-      m_renderer.set_mesh(Scene_renderer::left, make_render_mesh(m_original, m_frame));
-    simplify(true);
+    show_level(start.level, start.ratio);
   }
 
-  // One frame's logic: background results, the panel, the mouse.
+  // One frame's logic: background results, the panel, the mouse, the keys.
   void update() {
     try {
       if (std::optional<Simplified> result = m_simplifier.take()) {
@@ -76,11 +71,13 @@ class Viewer {
     }
     panel();
     mouse();
+    keys();
   }
 
   void draw(int width, int height) {
     Scene_captions captions;
-    captions.left = mesh_caption("original", input_faces(), m_mesh.number_of_vertices());
+    captions.left = mesh_caption(level_title(m_level, m_levels.size()), input_faces(),
+                                 m_mesh->number_of_vertices());
     captions.right = mesh_caption(pipeline_name(run_options()), m_faces, m_vertices);
     if (m_heat_map) {
       captions.legend_max = m_legend_max;
@@ -95,6 +92,31 @@ class Viewer {
 
  private:
   std::size_t input_faces() const { return m_original.triangles.size(); }
+
+  // Makes level `level` the mesh shown on the left and simplified on the right, the target
+  // `ratio` of its faces; the runs and measures under way for another level are dropped.
+  void show_level(std::size_t level, double ratio) {
+    m_level = level;
+    m_mesh = &m_levels[level];
+    m_original = Indexed_mesh::from_mesh(*m_mesh);
+    m_frame = Mesh_frame::of(m_original);
+    m_corner_values = cgal_policies::Corner_attributes<Point>(*m_mesh).any_corner_values();
+    m_target = std::max<std::size_t>(1, std::size_t(std::llround(ratio * double(input_faces()))));
+    m_current.reset();
+    m_error.reset();
+    m_distance.reset();
+    m_distance_cache.clear();
+    if (!show_corner_values(m_renderer, Scene_renderer::left, *m_mesh, m_frame, m_texture))
+      m_renderer.set_mesh(Scene_renderer::left, make_render_mesh(m_original, m_frame));
+    simplify(true);
+  }
+
+  // Steps `by` levels (negative: finer), within the file's levels, keeping the target's ratio.
+  void step_level(int by) {
+    const int last = int(m_levels.size()) - 1;
+    const auto level = std::size_t(std::clamp(int(m_level) + by, 0, last));
+    if (level != m_level) show_level(level, double(m_target) / double(input_faces()));
+  }
 
   // The options of the next run: the panel's policy, its values, the angle and the fit.
   cgal_policies::Simplification_options run_options() const {
@@ -125,21 +147,22 @@ class Viewer {
     // anew.
     record = record && !m_fit && !m_corner_values;
     m_recording = record;
-    m_simplifier.submit([this, record, options, target = m_target]() mutable {
+    // The job keeps to its level: another may be shown before it ends.
+    m_simplifier.submit([input = m_mesh, record, options, target = m_target]() mutable {
       Simplified result;
       result.target = target;
       if (record) {
         options.target = cgal_policies::Face_target::faces(0);
-        const Collapse_history history = record_collapses(m_mesh, options);
+        const Collapse_history history = record_collapses(*input, options);
         result.report = history.report;
         result.smallest_faces = std::max<std::size_t>(1, history.final_faces);
         // A policy that simplifies outside the edge-collapse visitor leaves no history.
         if (!history.collapses.empty()) {
-          result.replay = std::make_shared<const Collapse_replay>(m_mesh, history);
+          result.replay = std::make_shared<const Collapse_replay>(*input, history);
           return result;
         }
       }
-      result.mesh = m_mesh;
+      result.mesh = *input;
       options.target = cgal_policies::Face_target::faces(target);
       result.report = Pipeline(options).run(result.mesh);
       return result;
@@ -164,7 +187,7 @@ class Viewer {
     std::vector<double> errors;
     m_legend_max = 0;
     if (m_heat_map) {
-      if (!m_distance) m_distance = std::make_unique<Surface_distance>(m_mesh);
+      if (!m_distance) m_distance = std::make_unique<Surface_distance>(*m_mesh);
       errors = m_distance->vertex_distances(mesh, m_distance_cache);
       for (double& e : errors) e *= 100 * m_frame.scale;  // percent of the diagonal
       m_legend_max = errors.empty() ? 0 : *std::max_element(errors.begin(), errors.end());
@@ -174,8 +197,8 @@ class Viewer {
       m_renderer.set_mesh(Scene_renderer::right,
                           make_render_mesh(mesh, m_frame, errors, m_legend_max));
     m_error.reset();
-    m_measurer.submit([this, mesh = std::move(mesh)] {
-      return measure_mesh_error(m_mesh, mesh.to_mesh(), kViewerErrorSamples);
+    m_measurer.submit([input = m_mesh, mesh = std::move(mesh)] {
+      return measure_mesh_error(*input, mesh.to_mesh(), kViewerErrorSamples);
     });
   }
 
@@ -187,6 +210,7 @@ class Viewer {
                      ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize);
     ImGui::PushItemWidth(180);
     ImGui::TextUnformatted(m_title.c_str());
+    if (m_levels.size() > 1) level_control();
     bool changed = false;
     if (ImGui::BeginCombo("policy", m_policy->name.c_str())) {
       for (const Policy_entry& entry : policy_registry())
@@ -269,9 +293,34 @@ class Viewer {
     if (!m_message.empty())
       ImGui::TextColored(ImVec4(0.8f, 0.1f, 0.1f, 1), "%s", m_message.c_str());
     ImGui::TextDisabled("drag: orbit, right/shift drag: pan, wheel: zoom");
+    if (m_levels.size() > 1) ImGui::TextDisabled("PageUp/PageDown or [ ]: finer/coarser level");
     ImGui::PopItemWidth();
     m_panel_width = ImGui::GetWindowWidth();
     ImGui::End();
+  }
+
+  // The file's levels of detail: a slider over them and what the level shown holds.
+  void level_control() {
+    int level = int(m_level);
+    if (ImGui::SliderInt("level", &level, 0, int(m_levels.size()) - 1, "%d",
+                         ImGuiSliderFlags_AlwaysClamp))
+      step_level(level - int(m_level));
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("the file's levels of detail (MSFT_lod), 0 the finest");
+    ImGui::Text("%s, %zu faces", level_title(m_level, m_levels.size()).c_str(), input_faces());
+    ImGui::Separator();
+  }
+
+  // PageUp or '[' shows the next finer level, PageDown or ']' the next coarser one; characters,
+  // not keys, for the brackets, which sit on different keys in different layouts.
+  void keys() {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.WantCaptureKeyboard || m_levels.size() < 2) return;
+    int by = 0;
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_PageUp))) --by;
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_PageDown))) ++by;
+    for (const ImWchar c : io.InputQueueCharacters) by += c == ']' ? 1 : c == '[' ? -1 : 0;
+    if (by != 0) step_level(by);
   }
 
   void mouse() {
@@ -288,9 +337,11 @@ class Viewer {
     if (io.MouseWheel != 0) m_camera.zoom(std::pow(0.9f, io.MouseWheel));
   }
 
-  const Mesh& m_mesh;
-  const Indexed_mesh m_original;
-  const Mesh_frame m_frame;
+  const std::vector<Mesh>& m_levels;  // the file's levels of detail, finest first
+  std::size_t m_level = 0;            // the level shown
+  const Mesh* m_mesh = nullptr;       // that level, which the panel simplifies
+  Indexed_mesh m_original;            // the same, for the left pane
+  Mesh_frame m_frame;                 // the level's own, as a snapshot of it has
   const std::string m_title;
   const Policy_entry* m_policy;
   cgal_policies::Simplification_options m_options;  // but for the policy's option values
@@ -300,7 +351,7 @@ class Viewer {
   double m_value_before_edit = 0;  // of the policy option being edited
   bool m_heat_map;
   const Texture_image* m_texture;  // for the meshes with texture coordinates; may be none
-  const bool m_corner_values;      // the input has texture coordinates, normals or colours
+  bool m_corner_values = false;    // the level has texture coordinates, normals or colours
   bool m_fit;                      // the fitting pass after the policy (docs/fitting.md)
   Scene_renderer m_renderer;
   Orbit_camera m_camera;
@@ -321,7 +372,7 @@ class Viewer {
 
 }  // namespace
 
-void run_viewer_window(const Mesh& mesh, const Viewer_start& start) {
+void run_viewer_window(const std::vector<Mesh>& levels, const Viewer_start& start) {
   if (!glfwInit()) throw std::runtime_error("cannot open a window (no display?); try --snapshot");
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
@@ -343,7 +394,7 @@ void run_viewer_window(const Mesh& mesh, const Viewer_start& start) {
   ImGui_ImplOpenGL3_Init("#version 330 core");
   {
     const Gl_functions gl([](const char* name) { return Gl_proc(glfwGetProcAddress(name)); });
-    Viewer viewer(gl, mesh, start);
+    Viewer viewer(gl, levels, start);
     while (!glfwWindowShouldClose(window)) {
       // Idle without spinning: the machine is shared and the picture only changes on events.
       glfwWaitEventsTimeout(viewer.busy() ? 0.05 : 0.5);

@@ -16,7 +16,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <string>
 #include <tuple>
+#include <vector>
 
 namespace apps {
 namespace {
@@ -29,7 +31,9 @@ void print_help() {
          "its\n"
          "options and the target face count. A mesh with texture coordinates and a texture (an\n"
          "OBJ's map_Kd), or with colours, is drawn with them, and so is each simplification that\n"
-         "carries them.\n\n"
+         "carries them. A glTF file with levels of detail (MSFT_lod, as simplify --lod writes it)\n"
+         "shows one level at a time, the panel simplifying that level: PageUp/PageDown or [ ]\n"
+         "step to the finer or coarser level.\n\n"
          "  --policy NAME         "
       << policy_names() << " (default: the default pipeline, "
       << pipeline_name(cgal_policies::Simplification_options())
@@ -40,6 +44,7 @@ void print_help() {
          "  --flat                flat shading instead of smooth\n"
          "  --wireframe           draw the edges\n"
          "  --heat-map            colour the simplified mesh by its distance to MESH\n"
+         "  --lod-level K         show MESH's level of detail K, 0 the finest (default 0)\n"
          "  --snapshot OUT.png    render the view without a window, write it and exit\n"
          "  --size WxH            the snapshot's size in pixels (default 1600x800)\n"
          "  --help                this text\n\n"
@@ -47,14 +52,19 @@ void print_help() {
          "Exit codes: 0 done, 1 not done, 2 bad usage, 3 bad input, 4 output not written.\n";
 }
 
-int write_snapshot_of(const Mesh& mesh, cgal_policies::Simplification_options options, double ratio,
+// Level `level` of `levels` beside its simplification; the summary line names the level when the
+// file has more than one.
+int write_snapshot_of(const std::vector<Mesh>& levels, std::size_t level,
+                      cgal_policies::Simplification_options options, double ratio,
                       Snapshot_settings snapshot, const std::string& png) {
+  const Mesh& mesh = levels[level];
   options.target = cgal_policies::Face_target::ratio(ratio);
   Mesh simplified = mesh;
   const cgal_policies::Simplification_report report = Pipeline(options).run(simplified);
-  const std::string name = pipeline_name(options);
-  caption_snapshot(mesh, simplified, name, snapshot);
+  const std::string name = pipeline_name(options), title = level_title(level, levels.size());
+  caption_snapshot(mesh, simplified, name, snapshot, title);
   write_snapshot(mesh, simplified, snapshot, png);
+  if (levels.size() > 1) std::printf("%s, ", title.c_str());
   std::printf("%s: %zu -> %zu faces in %.3f s (%s); wrote %s (%dx%d)\n", name.c_str(),
               report.input_faces, report.output_faces, report.total_seconds(),
               to_string(report.stop_reason), png.c_str(), snapshot.width, snapshot.height);
@@ -77,6 +87,7 @@ int run(int argc, char** argv) {
   snapshot.view.flat_shading = cli.take_flag("flat");
   snapshot.view.wireframe = cli.take_flag("wireframe");
   snapshot.heat_map = cli.take_flag("heat-map");
+  const auto level = std::size_t(cli.take_whole_number("lod-level", 0, kMaxCount).value_or(0));
   const std::vector<std::string> args = cli.positionals();
   if (args.size() != 1)
     throw App_error(exit_usage, "usage: mesh_viewer MESH [options] (see --help)");
@@ -86,10 +97,17 @@ int run(int argc, char** argv) {
     throw App_error(exit_usage, *png + ": the snapshot must be a .png file");
 
   Read_report report;
-  Mesh mesh = read_triangle_mesh(args[0], &report, Corner_attribute_reading::keep);
-  mesh.collect_garbage();
-  snapshot.texture = texture_to_draw(mesh, report.materials);
-  if (png) return write_snapshot_of(mesh, choice.options, ratio, snapshot, *png);
+  std::vector<Mesh> levels = read_lod_chain(args[0], &report, Corner_attribute_reading::keep);
+  // Its range is known once MESH is read.
+  if (level >= levels.size())
+    throw App_error(exit_usage, "--lod-level must be a whole number in [0, " +
+                                    std::to_string(levels.size() - 1) + "]: " + args[0] + " has " +
+                                    std::to_string(levels.size()) +
+                                    (levels.size() == 1 ? " level" : " levels") + " of detail");
+  for (Mesh& mesh : levels) mesh.collect_garbage();
+  // Every level has the texture coordinates of the finest and shares its materials.
+  snapshot.texture = texture_to_draw(levels.front(), report.materials);
+  if (png) return write_snapshot_of(levels, level, choice.options, ratio, snapshot, *png);
 
   Viewer_start start;
   start.title = std::filesystem::path(args[0]).filename().string();
@@ -99,7 +117,8 @@ int run(int argc, char** argv) {
   start.view = snapshot.view;
   start.heat_map = snapshot.heat_map;
   start.texture = snapshot.texture ? &*snapshot.texture : nullptr;
-  run_viewer_window(mesh, start);
+  start.level = level;
+  run_viewer_window(levels, start);
   return exit_success;
 }
 

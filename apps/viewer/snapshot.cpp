@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 
 namespace apps {
 
@@ -35,15 +36,20 @@ bool show_corner_values(Scene_renderer& renderer, Scene_renderer::Pane pane, con
   return true;
 }
 
+std::string level_title(std::size_t level, std::size_t levels) {
+  if (levels == 1) return "original";
+  return "level " + std::to_string(level) + " of 0-" + std::to_string(levels - 1);
+}
+
 void caption_snapshot(const Mesh& original, const Mesh& simplified, const std::string& policy_name,
-                      Snapshot_settings& settings) {
+                      Snapshot_settings& settings, const std::string& original_title) {
   const Mesh_error error = measure_mesh_error(original, simplified, kViewerErrorSamples);
   char figures[128];
   std::snprintf(figures, sizeof figures, "\nHausdorff %.3f%%, mean %.3f%% of the diagonal",
                 100 * error.hausdorff / error.bbox_diagonal,
                 100 * error.mean_a_to_b / error.bbox_diagonal);
   settings.left_caption =
-      mesh_caption("original", original.number_of_faces(), original.number_of_vertices());
+      mesh_caption(original_title, original.number_of_faces(), original.number_of_vertices());
   settings.right_caption =
       mesh_caption(policy_name, simplified.number_of_faces(), simplified.number_of_vertices()) +
       figures;

@@ -39,10 +39,15 @@ std::optional<Texture_image> texture_to_draw(const Mesh& mesh,
 bool show_corner_values(Scene_renderer& renderer, Scene_renderer::Pane pane, const Mesh& mesh,
                         const Mesh_frame& frame, const Texture_image* texture);
 
-// Captions both panes: the face and vertex counts, and under `policy_name` the two-sided error of
-// `simplified` (kViewerErrorSamples samples).
+// The left pane's title for level `level` of a file of `levels` levels of detail (0 the finest):
+// "original" when it has one, "level k of 0-n" otherwise, n its coarsest.
+std::string level_title(std::size_t level, std::size_t levels);
+
+// Captions both panes: under `original_title` and `policy_name` the face and vertex counts, and
+// under the latter the two-sided error of `simplified` (kViewerErrorSamples samples).
 void caption_snapshot(const Mesh& original, const Mesh& simplified, const std::string& policy_name,
-                      Snapshot_settings& settings);
+                      Snapshot_settings& settings,
+                      const std::string& original_title = level_title(0, 1));
 
 // Throws Io_error (unwritable output) when the PNG cannot be written (no partial file is left), and
 // std::runtime_error when no offscreen OpenGL 3.3 context is available.

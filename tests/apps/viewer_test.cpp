@@ -1,5 +1,6 @@
 // mesh_viewer: the collapse recording and its replay, the background task, the heat map's pieces,
-// and the headless snapshots (OSMesa: no display needed).
+// and the headless snapshots (OSMesa: no display needed), a glTF file's levels of detail among
+// them.
 #include "Collapse_replay.h"
 #include "Latest_task.h"
 #include "Render_mesh.h"
@@ -12,6 +13,7 @@
 
 #include <stb_image.h>
 #include <stb_image_write.h>
+#include <nlohmann/json.hpp>
 
 #include <gtest/gtest.h>
 
@@ -26,6 +28,7 @@
 #include <memory>
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace {
 
@@ -274,6 +277,18 @@ Picture load_png(const std::string& path) {
   return picture;
 }
 
+// The pixels that differ between two pictures of one size in the columns [x0, x1), from row
+// `first_row` down: below it the captions, which name the level, are out of the way.
+std::size_t differing_pixels(const Picture& a, const Picture& b, int x0, int x1, int first_row) {
+  std::size_t count = 0;
+  for (int y = first_row; y < a.height; ++y)
+    for (int x = x0; x < x1; ++x) {
+      const std::size_t i = (std::size_t(y) * std::size_t(a.width) + std::size_t(x)) * 3;
+      count += !std::equal(&a.rgb[i], &a.rgb[i] + 3, &b.rgb[i]);
+    }
+  return count;
+}
+
 TEST_F(Snapshot, BunnyAtTenPercentIsCentredAndDiffersFromFiftyPercent) {
   SKIP_IF_REAL_MESHES_ARE_OFF();
   const std::string bunny = test_meshes::data_file("bunny.obj");
@@ -302,13 +317,8 @@ TEST_F(Snapshot, BunnyAtTenPercentIsCentredAndDiffersFromFiftyPercent) {
   EXPECT_GT(central, drawn * 3 / 4);
 
   // The left panes show the same original; the right panes differ.
-  std::size_t left_differs = 0, right_differs = 0;
-  for (int y = 0; y < ten.height; ++y)
-    for (int x = 0; x < ten.width; ++x) {
-      const std::size_t i = (std::size_t(y) * ten.width + x) * 3;
-      const bool differs = !std::equal(&ten.rgb[i], &ten.rgb[i] + 3, &fifty.rgb[i]);
-      (x < ten.width / 2 ? left_differs : right_differs) += differs;
-    }
+  const std::size_t left_differs = differing_pixels(ten, fifty, 0, ten.width / 2, 0),
+                    right_differs = differing_pixels(ten, fifty, ten.width / 2, ten.width, 0);
   EXPECT_GT(right_differs, std::size_t(100));
   EXPECT_LT(left_differs, right_differs / 10);  // only the captions' text
 }
@@ -468,6 +478,69 @@ TEST_F(Snapshot, TheViewerDrawsTexturesAndColours) {
             std::string::npos)
       << output_text();
   EXPECT_FALSE(std::filesystem::exists(path("view.png")));
+}
+
+// Three spheres of 320, 80 and 20 faces (loop_sphere(2), loop_sphere(1), the icosahedron) written
+// as one chain by write_lod_chain_atomically. The viewer shows level 0 unless --lod-level says
+// otherwise, draws the level on the left and simplifies it on the right, and its summary line
+// names the level and its faces. Below the captions, level 1's picture is that of the same sphere
+// in a file of its own, and differs from level 0's in both panes.
+TEST_F(Snapshot, ALodLevelIsDrawnAndSimplifiedAsAFileOfItsOwn) {
+  const std::vector<Mesh> spheres = {test_meshes::loop_sphere(2), test_meshes::loop_sphere(1),
+                                     test_meshes::icosahedron()};
+  apps::write_lod_chain_atomically({{&spheres[0], 0.5}, {&spheres[1], 0.2}, {&spheres[2], 0}},
+                                   path("chain.glb"));
+  apps::write_mesh_atomically(spheres[1], path("level1.glb"));
+  const std::string options = " --policy lt --ratio 0.5 --size 400x200 --snapshot ";
+  const std::vector<std::string> level_arguments = {"", " --lod-level 1", " --lod-level 2"};
+  const std::vector<std::string> summaries = {"level 0 of 0-2, lt: 320 -> 160 faces",
+                                              "level 1 of 0-2, lt: 80 -> 40 faces",
+                                              "level 2 of 0-2, lt: 20 -> 10 faces"};
+  std::vector<Picture> levels;
+  for (std::size_t k = 0; k < summaries.size(); ++k) {
+    const std::string png = path("level" + std::to_string(k) + ".png");
+    ASSERT_EQ(run_viewer(path("chain.glb") + level_arguments[k] + options + png), 0)
+        << output_text();
+    EXPECT_EQ(output_text().rfind(summaries[k], 0), 0u) << output_text();
+    levels.push_back(load_png(png));
+    ASSERT_EQ(levels.back().width, 400);
+  }
+  ASSERT_EQ(run_viewer(path("level1.glb") + options + path("alone.png")), 0) << output_text();
+  EXPECT_EQ(output_text().rfind("lt: 80 -> 40 faces", 0), 0u) << output_text();
+  const Picture alone = load_png(path("alone.png"));
+  ASSERT_EQ(alone.rgb.size(), levels[1].rgb.size());
+  const int below_captions = 60;  // three lines of 12 pixels from row 10
+  EXPECT_EQ(differing_pixels(levels[1], alone, 0, 400, below_captions), 0u);
+  for (const int pane : {0, 1}) {
+    SCOPED_TRACE("pane " + std::to_string(pane));
+    EXPECT_GT(differing_pixels(levels[0], levels[1], pane * 200, pane * 200 + 200, below_captions),
+              std::size_t(100));
+  }
+}
+
+// --lod-level past the file's levels is one usage line (exit 2), as is one that is not a whole
+// number; a bad MSFT_lod reference is one bad-input line naming the file (exit 3). No picture.
+TEST_F(Snapshot, BadLodLevelsAndLodReferencesHaveTheirExitCodes) {
+  const std::vector<Mesh> spheres = {test_meshes::loop_sphere(1), test_meshes::icosahedron()};
+  const std::string chain = path("chain.gltf"), png = path("level.png");
+  apps::write_lod_chain_atomically({{&spheres[0], 0.2}, {&spheres[1], 0}}, chain);
+  EXPECT_EQ(run_viewer(chain + " --lod-level 2 --snapshot " + png), 2);
+  EXPECT_EQ(output_text(), "mesh_viewer: --lod-level must be a whole number in [0, 1]: " + chain +
+                               " has 2 levels of detail\n");
+  apps::write_mesh_atomically(spheres[1], path("one.off"));
+  EXPECT_EQ(run_viewer(path("one.off") + " --lod-level 1 --snapshot " + png), 2);
+  EXPECT_EQ(output_text(), "mesh_viewer: --lod-level must be a whole number in [0, 0]: " +
+                               path("one.off") + " has 1 level of detail\n");
+  EXPECT_EQ(run_viewer(chain + " --lod-level 0.5 --snapshot " + png), 2);
+  EXPECT_EQ(output_text(), "mesh_viewer: --lod-level must be a whole number in [0, 1e+15]\n");
+
+  nlohmann::json gltf = nlohmann::json::parse(std::ifstream(chain));
+  gltf["nodes"][0]["extensions"]["MSFT_lod"]["ids"] = {5};
+  std::ofstream(path("bad.gltf")) << gltf.dump();
+  EXPECT_EQ(run_viewer(path("bad.gltf") + " --snapshot " + png), 3);
+  EXPECT_EQ(output_text(), "mesh_viewer: " + path("bad.gltf") +
+                               ": node 0's MSFT_lod names node 5, which does not exist\n");
+  EXPECT_FALSE(std::filesystem::exists(png));
 }
 
 }  // namespace
