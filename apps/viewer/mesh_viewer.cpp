@@ -105,7 +105,8 @@ int run(int argc, char** argv) {
                                     std::to_string(levels.size()) +
                                     (levels.size() == 1 ? " level" : " levels") + " of detail");
   for (Mesh& mesh : levels) mesh.collect_garbage();
-  // Every level has the texture coordinates of the finest and shares its materials.
+  // The levels share their materials, and simplify --lod gives each the finest one's kinds of
+  // corner values: the finest says whether a texture is drawn.
   snapshot.texture = texture_to_draw(levels.front(), report.materials);
   if (png) return write_snapshot_of(levels, level, choice.options, ratio, snapshot, *png);
 
