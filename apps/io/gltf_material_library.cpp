@@ -11,22 +11,17 @@
 #include <map>
 #include <system_error>
 
-namespace cgal_policies {
-namespace io {
-namespace {
-
 namespace fs = std::filesystem;
 
-// The index in `looks` of the image of `material`'s base colour texture; -1 when it has none (a
-// texture may have its image in an extension alone, KHR_texture_basisu's or EXT_texture_webp's).
-int base_color_image(const tinygltf::Model& looks, const tinygltf::Material& material) {
-  const int texture = material.pbrMetallicRoughness.baseColorTexture.index;
+namespace cgal_policies {
+namespace io {
+
+int base_color_image(const tinygltf::Model& looks, std::size_t material) {
+  const int texture = looks.materials[material].pbrMetallicRoughness.baseColorTexture.index;
   if (texture < 0 || std::size_t(texture) >= looks.textures.size()) return -1;
   const int image = looks.textures[std::size_t(texture)].source;
   return image >= 0 && std::size_t(image) < looks.images.size() ? image : -1;
 }
-
-}  // namespace
 
 Gltf_material_library gltf_material_library(const tinygltf::Model& looks,
                                             const std::vector<std::string>& names,
@@ -66,7 +61,7 @@ Gltf_material_library gltf_material_library(const tinygltf::Model& looks,
       if (material.alphaMode != "OPAQUE") written.opacity = factor[3];
     }
     if (material.pbrMetallicRoughness.baseColorTexture.index >= 0) {
-      const int image = base_color_image(looks, material);
+      const int image = base_color_image(looks, m);
       if (image >= 0) written.diffuse_map = diffuse_map(image);
       if (written.diffuse_map.empty())
         library.left_out.push_back(library_path + ": material '" + names[m] +

@@ -6,6 +6,7 @@
 
 #include "mesh_io.h"
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,12 @@ struct Gltf_material_library {
 Gltf_material_library gltf_material_library(const tinygltf::Model& looks,
                                             const std::vector<std::string>& names,
                                             const std::vector<bool>& used, const std::string& path);
+
+// The index in `looks.images` of the image of the base colour texture of
+// `looks.materials[material]`; -1 when it has none (a texture may have its image in an extension
+// alone, KHR_texture_basisu's or EXT_texture_webp's). The OBJ library and the viewer's picture take
+// the same image.
+int base_color_image(const tinygltf::Model& looks, std::size_t material);
 
 // Throws Io_error (unwritable output, "<file>: refusing to overwrite an image of the input") when
 // one of `files` is an image file that `looks` names.
