@@ -303,7 +303,9 @@ int run(int argc, char** argv) {
       for (const std::string& repair : read_report.repairs)
         std::cerr << "simplify: " << input << ": " << repair << '\n';
     // Before any work: a texture the picture needs and cannot read is bad input.
-    if (snapshot) snapshot->renderer->prepare(mesh, read_report.materials);
+    if (snapshot)
+      for (const std::string& loss : snapshot->renderer->prepare(mesh, read_report.materials))
+        std::cerr << "simplify: warning: " << input << ": " << loss << '\n';
     input_had_corner_values = cgal_policies::Corner_attributes<Point>(mesh).any_corner_values();
     if (!request.lod_ratios.empty())
       return run_lod_chain(request, {mesh, read_report, read_seconds, input_had_corner_values});

@@ -10,6 +10,7 @@
 #include <memory>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace apps {
 
@@ -17,8 +18,10 @@ class Snapshot_renderer {
  public:
   virtual ~Snapshot_renderer() = default;
   // Before any work: reads what the picture needs of the input, the texture its materials name;
-  // Io_error (unreadable input) when that file is missing or is not an image.
-  virtual void prepare(const Mesh& input, const Material_references& materials) = 0;
+  // Io_error (unreadable input) when that file is missing or is not an image. Returns what the
+  // picture will be drawn without, a line each (a glTF image that cannot be decoded).
+  virtual std::vector<std::string> prepare(const Mesh& input,
+                                           const Material_references& materials) = 0;
   // Draws `input` beside `output`, captioned with `name` and its two-sided error, into `png`, all
   // or nothing: Io_error when it cannot be written, std::runtime_error without an OpenGL context.
   virtual void write(const Mesh& input, const Mesh& output, const std::string& name,

@@ -5,21 +5,45 @@
 #include <stb_image.h>
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 
 namespace apps {
 
-Texture_image Texture_image::load(const std::string& path) {
-  Texture_image image;
-  int channels = 0;
-  const std::unique_ptr<stbi_uc, void (*)(void*)> data(
-      stbi_load(path.c_str(), &image.width, &image.height, &channels, 3), stbi_image_free);
-  if (!data)
+namespace {
+
+// The image of stb's `pixels` (three channels), which it takes and frees; Io_error naming
+// `source` when stb read none.
+Texture_image from_stb(stbi_uc* pixels, int width, int height, const std::string& source) {
+  const std::unique_ptr<stbi_uc, void (*)(void*)> owned(pixels, stbi_image_free);
+  if (!owned)
     throw cgal_policies::io::Io_error(cgal_policies::io::Io_error::Kind::unreadable_input,
-                                      path + ": " + stbi_failure_reason());
-  image.rgb.assign(data.get(),
-                   data.get() + std::size_t(image.width) * std::size_t(image.height) * 3);
+                                      source + ": " + stbi_failure_reason());
+  Texture_image image;
+  image.width = width;
+  image.height = height;
+  image.rgb.assign(owned.get(), owned.get() + std::size_t(width) * std::size_t(height) * 3);
   return image;
+}
+
+}  // namespace
+
+Texture_image Texture_image::load(const std::string& path) {
+  int width = 0, height = 0, channels = 0;
+  stbi_uc* pixels = stbi_load(path.c_str(), &width, &height, &channels, 3);
+  return from_stb(pixels, width, height, path);
+}
+
+Texture_image Texture_image::decode(const std::vector<unsigned char>& bytes,
+                                    const std::string& source) {
+  // stb takes an int length: a larger image is refused rather than read in part.
+  if (bytes.size() > std::size_t(std::numeric_limits<int>::max()))
+    throw cgal_policies::io::Io_error(cgal_policies::io::Io_error::Kind::unreadable_input,
+                                      source + ": too large to decode");
+  int width = 0, height = 0, channels = 0;
+  stbi_uc* pixels =
+      stbi_load_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels, 3);
+  return from_stb(pixels, width, height, source);
 }
 
 std::array<double, 3> Texture_image::color_at(double u, double v) const {

@@ -15,6 +15,9 @@ struct Texture_image {
 
   // Throws Io_error (unreadable input, "<path>: <cause>") when the file is not an image stb reads.
   static Texture_image load(const std::string& path);
+  // The image whose file's bytes are `bytes` (a glTF file holds its images so); throws as load,
+  // naming `source`.
+  static Texture_image decode(const std::vector<unsigned char>& bytes, const std::string& source);
 
   // The colour (red, green, blue in [0, 1]) at texture coordinates (u, v), v = 0 being the bottom
   // row, filtered as the renderer draws it: bilinear between texel centres, clamped at the edges.

@@ -30,10 +30,11 @@ void print_help() {
          "to orbit, right-drag or shift-drag to pan, wheel to zoom; the panel picks the policy, "
          "its\n"
          "options and the target face count. A mesh with texture coordinates and a texture (an\n"
-         "OBJ's map_Kd), or with colours, is drawn with them, and so is each simplification that\n"
-         "carries them. A glTF file with levels of detail (MSFT_lod, as simplify --lod writes it)\n"
-         "shows one level at a time, the panel simplifying that level: PageUp/PageDown or [ ]\n"
-         "step to the finer or coarser level.\n\n"
+         "OBJ's map_Kd, a glTF material's base colour texture in PNG or JPEG), or with colours,\n"
+         "is drawn with them, and so is each simplification that carries them. A glTF file\n"
+         "with levels of detail (MSFT_lod, as simplify --lod writes it) shows one level at a\n"
+         "time, the panel simplifying that level: PageUp/PageDown or [ ] step to the finer or\n"
+         "coarser level.\n\n"
          "  --policy NAME         "
       << policy_names() << " (default: the default pipeline, "
       << pipeline_name(cgal_policies::Simplification_options())
@@ -107,7 +108,10 @@ int run(int argc, char** argv) {
   for (Mesh& mesh : levels) mesh.collect_garbage();
   // The levels share their materials, and simplify --lod gives each the finest one's kinds of
   // corner values: the finest says whether a texture is drawn.
-  snapshot.texture = texture_to_draw(levels.front(), report.materials);
+  std::vector<std::string> left_out;
+  snapshot.texture = texture_to_draw(levels.front(), report.materials, left_out);
+  for (const std::string& loss : left_out)
+    std::cerr << "mesh_viewer: warning: " << args[0] << ": " << loss << '\n';
   if (png) return write_snapshot_of(levels, level, choice.options, ratio, snapshot, *png);
 
   Viewer_start start;

@@ -12,8 +12,11 @@ class Offscreen_snapshot_renderer : public Snapshot_renderer {
     m_settings.height = height;
   }
 
-  void prepare(const Mesh& input, const Material_references& materials) override {
-    m_settings.texture = texture_to_draw(input, materials);
+  std::vector<std::string> prepare(const Mesh& input,
+                                   const Material_references& materials) override {
+    std::vector<std::string> left_out;
+    m_settings.texture = texture_to_draw(input, materials, left_out);
+    return left_out;
   }
 
   void write(const Mesh& input, const Mesh& output, const std::string& name,

@@ -6,21 +6,56 @@
 #include "evaluation/mesh_validity.h"
 #include "evaluation/surface_error.h"
 #include "io/atomic_write.h"
+#include "io/gltf_material_library.h"
 #include "io/material_texture.h"
 
 #include <cgal_policies/Corner_attributes.h>
 
 #include <stb_image_write.h>
+#include <tiny_gltf.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace apps {
 
-std::optional<Texture_image> texture_to_draw(const Mesh& mesh,
-                                             const Material_references& materials) {
+namespace {
+
+// texture_to_draw's glTF half.
+std::optional<Texture_image> base_color_texture(const tinygltf::Model& looks,
+                                                const std::vector<std::string>& names,
+                                                std::vector<std::string>& left_out) {
+  for (std::size_t m = 0; m < names.size() && m < looks.materials.size(); ++m) {
+    if (looks.materials[m].pbrMetallicRoughness.baseColorTexture.index < 0) continue;
+    const std::string material = "material '" + names[m] + "': its base colour texture ";
+    const int index = base_color_image(looks, m);
+    if (index < 0) {
+      left_out.push_back(material + "has no PNG or JPEG image; drawn without it");
+      return std::nullopt;
+    }
+    // An image file is named by its absolute path; an image the file held keeps its bytes.
+    const tinygltf::Image& image = looks.images[std::size_t(index)];
+    try {
+      return image.uri.empty()
+                 ? Texture_image::decode(image.image, "image " + std::to_string(index))
+                 : Texture_image::load(image.uri);
+    } catch (const Io_error& e) {
+      left_out.push_back(material + "cannot be decoded (" + e.what() + "); drawn without it");
+      return std::nullopt;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<Texture_image> texture_to_draw(const Mesh& mesh, const Material_references& materials,
+                                             std::vector<std::string>& left_out) {
   if (!cgal_policies::Corner_attributes<Point>(mesh).uvs) return std::nullopt;
+  if (materials.gltf) return base_color_texture(*materials.gltf, materials.names, left_out);
   const std::optional<std::string> file = diffuse_texture_file(materials);
   if (!file) return std::nullopt;
   return Texture_image::load(*file);

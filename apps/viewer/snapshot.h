@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace apps {
 
@@ -27,11 +28,15 @@ struct Snapshot_settings {
 // them interactive (mesh_error gives the reference figures).
 constexpr std::size_t kViewerErrorSamples = 20000;
 
-// The texture a mesh read with its corner attributes is drawn with: the diffuse map its materials
-// name, when it has texture coordinates. Io_error (unreadable input) when that file is missing or
-// is not an image, so that an app says so before any work.
-std::optional<Texture_image> texture_to_draw(const Mesh& mesh,
-                                             const Material_references& materials);
+// The texture a mesh read with its corner attributes is drawn with, when it has texture
+// coordinates: from an OBJ file, the diffuse map its materials name (diffuse_texture_file), with
+// Io_error (unreadable input) when that file is missing or is not an image, so that an app says so
+// before any work; from a glTF file, the image of the base colour texture of the first material
+// that has one (base_color_image, gltf_material_library.h), embedded or a file, and when stb cannot
+// decode that image (WebP, KTX2), none and a line in `left_out` ("material '<name>': ...; drawn
+// without it"): the file itself was read, and an untextured mesh is still worth showing.
+std::optional<Texture_image> texture_to_draw(const Mesh& mesh, const Material_references& materials,
+                                             std::vector<std::string>& left_out);
 
 // Gives `pane` the mesh's corners with their texture (when `texture` is given and the mesh has
 // texture coordinates), or else with their colours; false, and the pane left as it was, when the

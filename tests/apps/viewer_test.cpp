@@ -28,6 +28,7 @@
 #include <memory>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -478,6 +479,144 @@ TEST_F(Snapshot, TheViewerDrawsTexturesAndColours) {
             std::string::npos)
       << output_text();
   EXPECT_FALSE(std::filesystem::exists(path("view.png")));
+}
+
+// The rows of a 200 x 100 picture below its captions (three lines of 12 pixels from row 10).
+constexpr int kBelowCaptions = 60;
+
+// A 2 x 2 grid of squares over the textured square, textured alike: plane.obj, sharing square.mtl.
+void write_textured_plane(const std::string& obj) {
+  std::ofstream(obj) << "mtllib square.mtl\n"
+                        "v -1 -1 0\nv 0 -1 0\nv 1 -1 0\nv -1 0 0\nv 0 0 0\nv 1 0 0\n"
+                        "v -1 1 0\nv 0 1 0\nv 1 1 0\n"
+                        "vt 0 0\nvt 0.5 0\nvt 1 0\nvt 0 0.5\nvt 0.5 0.5\nvt 1 0.5\n"
+                        "vt 0 1\nvt 0.5 1\nvt 1 1\nusemtl checker\n"
+                        "f 1/1 2/2 5/5\nf 1/1 5/5 4/4\nf 2/2 3/3 6/6\nf 2/2 6/6 5/5\n"
+                        "f 4/4 5/5 8/8\nf 4/4 8/8 7/7\nf 5/5 6/6 9/9\nf 5/5 9/9 8/8\n";
+}
+
+// The pixels whose red or blue exceeds the other two channels by 100: the texture's colours.
+std::size_t texture_coloured_pixels(const Picture& picture) {
+  std::size_t count = 0;
+  for (std::size_t i = 0; i + 2 < picture.rgb.size(); i += 3) {
+    const int r = picture.rgb[i], g = picture.rgb[i + 1], b = picture.rgb[i + 2];
+    count += r > std::max(g, b) + 100 || b > std::max(r, g) + 100;
+  }
+  return count;
+}
+
+// The textured square and plane written as glTF by write_mesh_atomically and
+// write_lod_chain_atomically: a GLB with the PNG in its BIN chunk, a .gltf with it in its buffer,
+// a .gltf naming it by a percent-encoded uri, and a GLB of two levels, the plane then the square.
+// Below the captions, mesh_viewer draws each as it draws the OBJ of the same mesh with its .mtl,
+// pixel for pixel, every level of the chain included, and simplify --snapshot draws the GLB
+// textured too; no warning.
+TEST_F(Snapshot, AGltfBaseColourTextureIsDrawnAsTheObjsDiffuseMap) {
+  write_textured_square();
+  write_textured_plane(path("plane.obj"));
+  apps::Read_report square_report, plane_report;
+  const Mesh square = apps::read_triangle_mesh(path("square.obj"), &square_report,
+                                               apps::Corner_attribute_reading::keep);
+  const Mesh plane = apps::read_triangle_mesh(path("plane.obj"), &plane_report,
+                                              apps::Corner_attribute_reading::keep);
+  ASSERT_TRUE(
+      apps::write_mesh_atomically(square, path("square.glb"), square_report.materials).empty());
+  ASSERT_TRUE(
+      apps::write_mesh_atomically(square, path("square.gltf"), square_report.materials).empty());
+  ASSERT_TRUE(apps::write_lod_chain_atomically({{&plane, 0.5}, {&square, 0}}, path("chain.glb"),
+                                               plane_report.materials)
+                  .empty());
+  nlohmann::json gltf = nlohmann::json::parse(std::ifstream(path("square.gltf")));
+  ASSERT_EQ(gltf["images"].size(), 1u);
+  gltf["images"][0] = {{"uri", "red%20blue.png"}};
+  std::ofstream(path("external.gltf")) << gltf.dump();
+  std::filesystem::copy_file(path("red_blue.png"), path("red blue.png"));
+
+  const std::string options = " --policy lt --ratio 1 --size 200x100 --snapshot ";
+  const auto snapshot = [&](const std::string& mesh, const std::string& arguments) {
+    EXPECT_EQ(run_viewer(path(mesh) + arguments + options + path("view.png")), 0) << mesh;
+    EXPECT_EQ(output_text().find("warning"), std::string::npos) << mesh << ": " << output_text();
+    return load_png(path("view.png"));
+  };
+  const Picture square_obj = snapshot("square.obj", ""), plane_obj = snapshot("plane.obj", "");
+  expect_red_left_and_blue_right(square_obj);
+  expect_red_left_and_blue_right(plane_obj);
+  std::filesystem::remove(path("red_blue.png"));  // the OBJ files' texture: not the glTF files'
+
+  for (const std::string mesh : {"square.glb", "square.gltf", "external.gltf"}) {
+    const Picture picture = snapshot(mesh, "");
+    ASSERT_EQ(picture.rgb.size(), square_obj.rgb.size()) << mesh;
+    EXPECT_EQ(differing_pixels(picture, square_obj, 0, 200, kBelowCaptions), 0u) << mesh;
+  }
+  const Picture level0 = snapshot("chain.glb", ""),
+                level1 = snapshot("chain.glb", " --lod-level 1");
+  ASSERT_EQ(level0.rgb.size(), plane_obj.rgb.size());
+  ASSERT_EQ(level1.rgb.size(), square_obj.rgb.size());
+  EXPECT_EQ(differing_pixels(level0, plane_obj, 0, 200, kBelowCaptions), 0u);
+  EXPECT_EQ(differing_pixels(level1, square_obj, 0, 200, kBelowCaptions), 0u);
+
+  ASSERT_EQ(run_simplify(path("square.glb") + " " + path("out.glb") + " 1 --snapshot " +
+                         path("simplified.png") + " --size 200x100"),
+            0)
+      << output_text();
+  EXPECT_EQ(output_text().find("warning"), std::string::npos) << output_text();
+  expect_red_left_and_blue_right(load_png(path("simplified.png")));
+}
+
+// A base colour texture mesh_viewer cannot draw: a WebP file (stb decodes no WebP), a texture
+// whose image is in KHR_texture_basisu alone (KTX2), an image file that is missing. Each is one
+// warning line naming the file and the material; the picture is that of the file without the
+// texture, in which no pixel has the texture's colours; exit 0.
+TEST_F(Snapshot, AGltfTextureThatCannotBeDecodedIsOneWarningAndAnUntexturedPicture) {
+  write_textured_square();
+  apps::Read_report report;
+  const Mesh square =
+      apps::read_triangle_mesh(path("square.obj"), &report, apps::Corner_attribute_reading::keep);
+  apps::write_mesh_atomically(square, path("square.gltf"), report.materials);
+  const nlohmann::json textured = nlohmann::json::parse(std::ifstream(path("square.gltf")));
+  const auto write_variant = [&](const std::string& name, const auto& change) {
+    nlohmann::json gltf = textured;
+    change(gltf);
+    std::ofstream(path(name)) << gltf.dump();
+  };
+  write_variant("plain.gltf", [](nlohmann::json& gltf) {
+    gltf["materials"][0]["pbrMetallicRoughness"].erase("baseColorTexture");
+  });
+  write_variant("webp.gltf", [](nlohmann::json& gltf) {
+    gltf["images"][0] = {{"uri", "skin.webp"}};
+  });
+  std::ofstream(path("skin.webp")) << std::string("RIFF\x1a\0\0\0WEBPVP8 \x0e\0\0\0", 20);
+  write_variant("ktx2.gltf", [](nlohmann::json& gltf) {
+    gltf["textures"][0] = {{"extensions", {{"KHR_texture_basisu", {{"source", 0}}}}}};
+    gltf["extensionsUsed"].push_back("KHR_texture_basisu");
+  });
+  write_variant("missing.gltf", [](nlohmann::json& gltf) {
+    gltf["images"][0] = {{"uri", "none.png"}};
+  });
+
+  const std::string options = " --policy lt --ratio 1 --size 200x100 --snapshot ";
+  ASSERT_EQ(run_viewer(path("plain.gltf") + options + path("plain.png")), 0) << output_text();
+  EXPECT_EQ(output_text().find("warning"), std::string::npos) << output_text();
+  const Picture plain = load_png(path("plain.png"));
+  ASSERT_EQ(plain.width, 200);
+  EXPECT_EQ(texture_coloured_pixels(plain), 0u);
+
+  const std::string material = ": material 'checker': its base colour texture ";
+  const std::vector<std::pair<std::string, std::string>> warnings = {
+      {"webp.gltf", "cannot be decoded (" + path("skin.webp") + ": unknown image type)"},
+      {"ktx2.gltf", "has no PNG or JPEG image"},
+      {"missing.gltf", "cannot be decoded (" + path("none.png") + ": can't fopen)"}};
+  for (const auto& [mesh, cause] : warnings) {
+    ASSERT_EQ(run_viewer(path(mesh) + options + path("view.png")), 0) << output_text();
+    const std::string line =
+        "mesh_viewer: warning: " + path(mesh) + material + cause + "; drawn without it\n";
+    const std::string output = output_text();
+    EXPECT_EQ(output.rfind(line, 0), 0u) << output;
+    EXPECT_EQ(output.find("warning", line.size()), std::string::npos) << output;
+    const Picture picture = load_png(path("view.png"));
+    ASSERT_EQ(picture.rgb.size(), plain.rgb.size()) << mesh;
+    EXPECT_EQ(differing_pixels(picture, plain, 0, 200, 0), 0u) << mesh;
+  }
 }
 
 // Three spheres of 320, 80 and 20 faces (loop_sphere(2), loop_sphere(1), the icosahedron) written
