@@ -302,7 +302,8 @@ int run(int argc, char** argv) {
     if (!quiet)
       for (const std::string& repair : read_report.repairs)
         std::cerr << "simplify: " << input << ": " << repair << '\n';
-    // Before any work: a texture the picture needs and cannot read is bad input.
+    // Before any work: a texture file the picture needs and cannot read is bad input; a glTF
+    // image it cannot decode is a warning (texture_to_draw).
     if (snapshot)
       for (const std::string& loss : snapshot->renderer->prepare(mesh, read_report.materials))
         std::cerr << "simplify: warning: " << input << ": " << loss << '\n';
