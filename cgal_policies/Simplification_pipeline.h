@@ -151,13 +151,10 @@ class Simplification_pipeline {
       const internal::Spatial_cells shifted = input.shifted_cells();
       std::optional<internal::Spill_files> shifted_spills;
       const auto input_parts = [&](const internal::Spatial_cells& by) {
-        if (&by != &input.cells())
-          input.spill_shifted(shifted, shifted_spills.emplace(report.parts));
-        const internal::Spill_files& spills =
-            &by == &input.cells() ? input.spills() : *shifted_spills;
-        return [&input, &spills](std::size_t c) {
-          return internal::near_triangles(input.part(spills, c));
-        };
+        const bool first_half = &by == &input.cells();
+        if (!first_half) input.spill_shifted(shifted, shifted_spills.emplace(report.parts));
+        return [parts = parts_of(input, first_half ? input.spills() : *shifted_spills)](
+                   std::size_t c) { return internal::near_triangles(parts(c)); };
       };
       return internal::fit_by_cells(mesh, input.cells(), shifted, m_options.threads, fit,
                                     input_parts);

@@ -77,7 +77,7 @@ class Viewer {
   void draw(int width, int height) {
     Scene_captions captions;
     captions.left = mesh_caption(level_title(m_level, m_levels.size()), input_faces(),
-                                 m_mesh->number_of_vertices());
+                                 level_mesh().number_of_vertices());
     captions.right = mesh_caption(pipeline_name(run_options()), m_faces, m_vertices);
     if (m_heat_map) {
       captions.legend_max = m_legend_max;
@@ -97,19 +97,21 @@ class Viewer {
   // `ratio` of its faces; the runs and measures under way for another level are dropped.
   void show_level(std::size_t level, double ratio) {
     m_level = level;
-    m_mesh = &m_levels[level];
-    m_original = Indexed_mesh::from_mesh(*m_mesh);
+    m_original = Indexed_mesh::from_mesh(level_mesh());
     m_frame = Mesh_frame::of(m_original);
-    m_corner_values = cgal_policies::Corner_attributes<Point>(*m_mesh).any_corner_values();
+    m_corner_values = cgal_policies::Corner_attributes<Point>(level_mesh()).any_corner_values();
     m_target = std::max<std::size_t>(1, std::size_t(std::llround(ratio * double(input_faces()))));
     m_current.reset();
     m_error.reset();
     m_distance.reset();
     m_distance_cache.clear();
-    if (!show_corner_values(m_renderer, Scene_renderer::left, *m_mesh, m_frame, m_texture))
+    if (!show_corner_values(m_renderer, Scene_renderer::left, level_mesh(), m_frame, m_texture))
       m_renderer.set_mesh(Scene_renderer::left, make_render_mesh(m_original, m_frame));
     simplify(true);
   }
+
+  // The level shown, which the panel simplifies.
+  const Mesh& level_mesh() const { return m_levels[m_level]; }
 
   // Steps `by` levels (negative: finer), within the file's levels, keeping the target's ratio.
   void step_level(int by) {
@@ -148,7 +150,7 @@ class Viewer {
     record = record && !m_fit && !m_corner_values;
     m_recording = record;
     // The job keeps to its level: another may be shown before it ends.
-    m_simplifier.submit([input = m_mesh, record, options, target = m_target]() mutable {
+    m_simplifier.submit([input = &level_mesh(), record, options, target = m_target]() mutable {
       Simplified result;
       result.target = target;
       if (record) {
@@ -187,7 +189,7 @@ class Viewer {
     std::vector<double> errors;
     m_legend_max = 0;
     if (m_heat_map) {
-      if (!m_distance) m_distance = std::make_unique<Surface_distance>(*m_mesh);
+      if (!m_distance) m_distance = std::make_unique<Surface_distance>(level_mesh());
       errors = m_distance->vertex_distances(mesh, m_distance_cache);
       for (double& e : errors) e *= 100 * m_frame.scale;  // percent of the diagonal
       m_legend_max = errors.empty() ? 0 : *std::max_element(errors.begin(), errors.end());
@@ -197,7 +199,7 @@ class Viewer {
       m_renderer.set_mesh(Scene_renderer::right,
                           make_render_mesh(mesh, m_frame, errors, m_legend_max));
     m_error.reset();
-    m_measurer.submit([input = m_mesh, mesh = std::move(mesh)] {
+    m_measurer.submit([input = &level_mesh(), mesh = std::move(mesh)] {
       return measure_mesh_error(*input, mesh.to_mesh(), kViewerErrorSamples);
     });
   }
@@ -339,7 +341,6 @@ class Viewer {
 
   const std::vector<Mesh>& m_levels;  // the file's levels of detail, finest first
   std::size_t m_level = 0;            // the level shown
-  const Mesh* m_mesh = nullptr;       // that level, which the panel simplifies
   Indexed_mesh m_original;            // the same, for the left pane
   Mesh_frame m_frame;                 // the level's own, as a snapshot of it has
   const std::string m_title;

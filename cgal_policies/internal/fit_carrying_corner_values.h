@@ -70,6 +70,7 @@ Two_sided_fit_report fit_carrying_corner_values(
   const auto stays = [&](typename Mesh::Vertex_index v) {
     return seams.seam_edges_at(v) > 0 || (pinned && pinned(v));
   };
+  // A mesh is only read (the fitter keeps a reference), so it is still there to solve against.
   constexpr bool from_mesh = std::is_same_v<std::decay_t<Original>, Mesh>;
   const Two_sided_fit_report report =
       Two_sided_fitter<Mesh>(std::forward<Original>(original), options).fit(mesh, stays);

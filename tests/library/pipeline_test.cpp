@@ -665,8 +665,6 @@ TEST(SpatialCells, SplitsAtTheMediansOfTheLongestSides) {
   EXPECT_EQ(cgal_policies::internal::Spatial_cells({Eigen::Vector3d(1, 2, 3)}, 4).size(), 1u);
 }
 
-// A closed sphere with texture coordinates cut into eight parts and stitched back as it was: every
-// point, every face and every corner's values, and closed again.
 // The fit by cells reads a cell's triangles from the whole input, where a job reads its part: the
 // same corners, neighbours and order.
 TEST(MeshParts, ACellsTrianglesAreThoseOfItsPart) {
@@ -691,6 +689,8 @@ TEST(MeshParts, ACellsTrianglesAreThoseOfItsPart) {
   }
 }
 
+// A closed sphere with texture coordinates cut into eight parts and stitched back as it was: every
+// point, every face and every corner's values, and closed again.
 TEST(MeshParts, StitchingTheCutPartsGivesTheMeshBack) {
   namespace internal = cgal_policies::internal;
   Mesh sphere = loop_sphere(3);
