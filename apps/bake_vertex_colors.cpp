@@ -6,6 +6,7 @@
 #include "cli/Command_line.h"
 #include "cli/app_main.h"
 #include "cli/output_path.h"
+#include "cli/tuned_allocator.h"
 #include "io/material_texture.h"
 #include "io/mesh_io.h"
 #include "viewer/Texture_image.h"
@@ -80,5 +81,6 @@ int run(int argc, char** argv) {
 }  // namespace apps
 
 int main(int argc, char** argv) {
+  apps::restart_with_tuned_allocator(argv);
   return apps::guarded_main("bake_vertex_colors", [&] { return apps::run(argc, argv); });
 }

@@ -14,6 +14,7 @@
 #include "cli/Command_line.h"
 #include "cli/Json_object.h"
 #include "cli/app_main.h"
+#include "cli/tuned_allocator.h"
 #include "evaluation/attribute_error.h"
 #include "evaluation/mesh_validity.h"
 #include "evaluation/surface_error.h"
@@ -148,5 +149,6 @@ int run(int argc, char** argv) {
 }  // namespace apps
 
 int main(int argc, char** argv) {
+  apps::restart_with_tuned_allocator(argv);
   return apps::guarded_main("curvature_report", [&] { return apps::run(argc, argv); });
 }

@@ -6,6 +6,7 @@
 #include "cli/Json_object.h"
 #include "cli/app_main.h"
 #include "cli/report_fields.h"
+#include "cli/tuned_allocator.h"
 #include "evaluation/attribute_error.h"
 #include "evaluation/mesh_validity.h"
 #include "evaluation/surface_error.h"
@@ -111,5 +112,6 @@ int run(int argc, char** argv) {
 }  // namespace apps
 
 int main(int argc, char** argv) {
+  apps::restart_with_tuned_allocator(argv);
   return apps::guarded_main("mesh_error", [&] { return apps::run(argc, argv); });
 }

@@ -12,6 +12,7 @@
 #include "cli/peak_memory.h"
 #include "cli/report_fields.h"
 #include "cli/simplify_request.h"
+#include "cli/tuned_allocator.h"
 #include "evaluation/attribute_error.h"
 #include "evaluation/mesh_validity.h"
 #include "evaluation/surface_error.h"
@@ -369,5 +370,6 @@ int run(int argc, char** argv) {
 }  // namespace apps
 
 int main(int argc, char** argv) {
+  apps::restart_with_tuned_allocator(argv);
   return apps::guarded_main("simplify", [&] { return apps::run(argc, argv); });
 }

@@ -12,6 +12,7 @@
 #include "cli/app_main.h"
 #include "cli/pass_options.h"
 #include "cli/policy_command_line.h"
+#include "cli/tuned_allocator.h"
 #include "io/atomic_write.h"
 #include "pipeline/policy_registry.h"
 
@@ -349,5 +350,6 @@ int run(int argc, char** argv) {
 }  // namespace apps
 
 int main(int argc, char** argv) {
+  apps::restart_with_tuned_allocator(argv);
   return apps::guarded_main("simplify_bench", [&] { return apps::run(argc, argv); });
 }

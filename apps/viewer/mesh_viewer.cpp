@@ -8,6 +8,7 @@
 #include "cli/app_main.h"
 #include "cli/pass_options.h"
 #include "cli/policy_command_line.h"
+#include "cli/tuned_allocator.h"
 #include "io/mesh_io.h"
 #include "pipeline/Pipeline.h"
 #include "snapshot.h"
@@ -131,5 +132,6 @@ int run(int argc, char** argv) {
 }  // namespace apps
 
 int main(int argc, char** argv) {
+  apps::restart_with_tuned_allocator(argv);
   return apps::guarded_main("mesh_viewer", [&] { return apps::run(argc, argv); });
 }

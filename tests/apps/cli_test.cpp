@@ -7,6 +7,7 @@
 
 #include <cgal_policies/small_components.h>
 #include "cli/App_error.h"
+#include "cli/tuned_allocator.h"
 #include "evaluation/attribute_error.h"
 #include "evaluation/mesh_validity.h"
 #include "evaluation/surface_error.h"
@@ -45,9 +46,11 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <optional>
 #include <random>
 #include <regex>
 #include <sstream>
+#include <string>
 #include <thread>
 #include <tuple>
 #include <vector>
@@ -1467,3 +1470,18 @@ TEST_F(Cli, OutOfCoreRefusesWhatItCannotStream) {
 }
 
 }  // namespace
+
+// The apps restart once with glibc's malloc tunables; a user's own malloc tunables stand, and so
+// does a restart's, so that it happens once.
+TEST(TunedAllocator, TheTunablesAreAddedOnceAndAUsersMallocTunablesStand) {
+  const std::optional<std::string> fresh = apps::tuned_allocator_tunables(nullptr);
+  ASSERT_TRUE(fresh.has_value());
+  EXPECT_EQ(*fresh,
+            "glibc.malloc.hugetlb=1:glibc.malloc.top_pad=67108864:"
+            "glibc.malloc.trim_threshold=4294967296:glibc.malloc.mmap_threshold=33554432");
+  EXPECT_EQ(apps::tuned_allocator_tunables(""), fresh);
+  EXPECT_EQ(apps::tuned_allocator_tunables("glibc.rtld.optional_static_tls=4096"),
+            "glibc.rtld.optional_static_tls=4096:" + *fresh);
+  EXPECT_EQ(apps::tuned_allocator_tunables(fresh->c_str()), std::nullopt);
+  EXPECT_EQ(apps::tuned_allocator_tunables("glibc.malloc.hugetlb=0"), std::nullopt);
+}
