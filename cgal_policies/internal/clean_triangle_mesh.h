@@ -9,6 +9,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -16,46 +17,55 @@ namespace cgal_policies {
 namespace internal {
 namespace clean_triangles {
 
-constexpr std::size_t kNone = (std::numeric_limits<std::size_t>::max)();
+// The index of a side or a point: 32 bits when the soup's sides and points number fewer than 2^32,
+// which halves the memory of these tables (fresh memory is costly to fault in: docs/scale.md).
+template <class Index>
+constexpr Index kNone = (std::numeric_limits<Index>::max)();
 
 // Side s runs along triangle s / 3 from its corner s to the triangle's next corner.
-inline std::size_t next_corner(std::size_t s) { return s % 3 == 2 ? s - 2 : s + 1; }
+template <class Index>
+Index next_corner(Index s) {
+  return s % 3 == 2 ? s - 2 : s + 1;
+}
 
 // The sides leaving each point, grouped by point, with their heads: those of point p are
 // leaving[first[p]] .. leaving[first[p + 1] - 1].
+template <class Index>
 struct Sides_by_tail {
   struct Side {
-    std::size_t head, side;
+    Index head, side;
   };
-  std::vector<std::size_t> first;
+  std::vector<Index> first;
   std::vector<Side> leaving;
 };
 
-inline Sides_by_tail sides_by_tail(std::size_t point_count,
+template <class Index>
+Sides_by_tail<Index> sides_by_tail(std::size_t point_count,
                                    const std::vector<std::size_t>& corners) {
-  Sides_by_tail out;
+  Sides_by_tail<Index> out;
   out.first.assign(point_count + 1, 0);
   for (std::size_t corner : corners) ++out.first[corner + 1];
   for (std::size_t p = 0; p < point_count; ++p) out.first[p + 1] += out.first[p];
   out.leaving.resize(corners.size());
-  std::vector<std::size_t> cursor(out.first.begin(), out.first.end() - 1);
-  for (std::size_t s = 0; s < corners.size(); ++s)
-    out.leaving[cursor[corners[s]]++] = {corners[next_corner(s)], s};
+  std::vector<Index> cursor(out.first.begin(), out.first.end() - 1);
+  for (Index s = 0; s < corners.size(); ++s)
+    out.leaving[cursor[corners[s]]++] = {Index(corners[next_corner(s)]), s};
   return out;
 }
 
 // The side running the other way along each side's edge, or kNone on a border; false when an
 // oriented edge is used twice (which is also how an edge of three or more faces shows).
-inline bool find_twins(const std::vector<std::size_t>& corners, const Sides_by_tail& by_tail,
-                       std::vector<std::size_t>& twin) {
-  twin.assign(corners.size(), kNone);
-  for (std::size_t a = 0; a + 1 < by_tail.first.size(); ++a) {
-    const std::size_t begin = by_tail.first[a], end = by_tail.first[a + 1];
-    for (std::size_t i = begin; i < end; ++i) {
+template <class Index>
+bool find_twins(const std::vector<std::size_t>& corners, const Sides_by_tail<Index>& by_tail,
+                std::vector<Index>& twin) {
+  twin.assign(corners.size(), kNone<Index>);
+  for (Index a = 0; a + 1 < by_tail.first.size(); ++a) {
+    const Index begin = by_tail.first[a], end = by_tail.first[a + 1];
+    for (Index i = begin; i < end; ++i) {
       const auto [b, s] = by_tail.leaving[i];
-      for (std::size_t j = i + 1; j < end; ++j)
+      for (Index j = i + 1; j < end; ++j)
         if (by_tail.leaving[j].head == b) return false;
-      for (std::size_t j = by_tail.first[b]; j < by_tail.first[b + 1]; ++j)
+      for (Index j = by_tail.first[b]; j < by_tail.first[b + 1]; ++j)
         if (by_tail.leaving[j].head == a) twin[s] = by_tail.leaving[j].side;
     }
   }
@@ -76,21 +86,11 @@ bool is_one_fan(const CGAL::Surface_mesh<Point>& mesh, CGAL::SM_Vertex_index v,
   return false;
 }
 
-}  // namespace clean_triangles
-
-// Builds `mesh` from the triangles `corners` (three point indices each, all below points.size())
-// when each has three distinct points, no oriented edge is used twice, no edge has more than two
-// faces, and the faces around each point form one fan: the mesh polygon_soup_to_polygon_mesh
-// builds, its edges numbered as Euler::add_face numbers them, face by face. Points no face uses
-// are left out and counted in `unused_points`; faces, and the used points, keep the soup's order.
-// Returns false and leaves `mesh` empty when the soup is not such a mesh. `vertex_of_point`, when
-// given, gets each point's vertex (a null index for an unused point).
-template <class Point>
-bool build_clean_triangle_mesh(const std::vector<Point>& points,
-                               const std::vector<std::size_t>& corners,
-                               CGAL::Surface_mesh<Point>& mesh, std::size_t& unused_points,
-                               std::vector<CGAL::SM_Vertex_index>* vertex_of_point = nullptr) {
-  using namespace clean_triangles;
+// The body of build_clean_triangle_mesh below, its tables indexed by Index.
+template <class Index, class Point>
+bool build_with_indices(const std::vector<Point>& points, const std::vector<std::size_t>& corners,
+                        CGAL::Surface_mesh<Point>& mesh, std::size_t& unused_points,
+                        std::vector<CGAL::SM_Vertex_index>* vertex_of_point) {
   using Mesh = CGAL::Surface_mesh<Point>;
   using Halfedge = typename Mesh::Halfedge_index;
   using Vertex = typename Mesh::Vertex_index;
@@ -99,12 +99,12 @@ bool build_clean_triangle_mesh(const std::vector<Point>& points,
     if (corners[s] == corners[s + 1] || corners[s + 1] == corners[s + 2] ||
         corners[s + 2] == corners[s])
       return false;
-  const Sides_by_tail by_tail = sides_by_tail(points.size(), corners);
-  std::vector<std::size_t> twin;
+  const Sides_by_tail<Index> by_tail = sides_by_tail<Index>(points.size(), corners);
+  std::vector<Index> twin;
   if (!find_twins(corners, by_tail, twin)) return false;
 
   std::size_t edge_count = 0;
-  for (std::size_t s = 0; s < twin.size(); ++s) edge_count += twin[s] == kNone || twin[s] > s;
+  for (Index s = 0; s < twin.size(); ++s) edge_count += twin[s] == kNone<Index> || twin[s] > s;
   std::vector<Vertex> vertex_of(points.size());
   unused_points = 0;
   for (std::size_t p = 0; p < points.size(); ++p)
@@ -118,9 +118,9 @@ bool build_clean_triangle_mesh(const std::vector<Point>& points,
   std::vector<Halfedge> halfedge_of(twin.size());
   for (std::size_t f = 0; f < face_count; ++f) {
     const auto face = mesh.add_face();
-    for (std::size_t s = 3 * f; s < 3 * f + 3; ++s) {
+    for (Index s = Index(3 * f); s < 3 * f + 3; ++s) {
       const Halfedge h =
-          twin[s] != kNone && twin[s] < s
+          twin[s] != kNone<Index> && twin[s] < s
               ? mesh.opposite(halfedge_of[twin[s]])
               : mesh.add_edge(vertex_of[corners[s]], vertex_of[corners[next_corner(s)]]);
       mesh.set_face(h, face);
@@ -129,15 +129,15 @@ bool build_clean_triangle_mesh(const std::vector<Point>& points,
     for (std::size_t i = 0; i < 3; ++i)
       mesh.set_next(halfedge_of[3 * f + i], halfedge_of[3 * f + (i + 1) % 3]);
     mesh.set_halfedge(face, halfedge_of[3 * f + 2]);
-    for (std::size_t s = 3 * f; s < 3 * f + 3; ++s)
+    for (Index s = Index(3 * f); s < 3 * f + 3; ++s)
       mesh.set_halfedge(vertex_of[corners[next_corner(s)]], halfedge_of[s]);
   }
 
   // A side without twin has a border halfedge opposite; it leaves the side's head. A point with
   // two border halfedges leaving it is where two fans touch.
   std::vector<Halfedge> border_leaving(points.size());
-  for (std::size_t s = 0; s < twin.size(); ++s) {
-    if (twin[s] != kNone) continue;
+  for (Index s = 0; s < twin.size(); ++s) {
+    if (twin[s] != kNone<Index>) continue;
     const Halfedge border = mesh.opposite(halfedge_of[s]);
     mesh.set_face(border, Mesh::null_face());
     Halfedge& leaving = border_leaving[corners[next_corner(s)]];
@@ -149,8 +149,8 @@ bool build_clean_triangle_mesh(const std::vector<Point>& points,
   }
   // Each point has as many border halfedges in as out, so every border halfedge has a next; the
   // halfedge of a border vertex is its border halfedge in, as CGAL's border tests expect.
-  for (std::size_t s = 0; s < twin.size(); ++s) {
-    if (twin[s] != kNone) continue;
+  for (Index s = 0; s < twin.size(); ++s) {
+    if (twin[s] != kNone<Index>) continue;
     const Halfedge border = mesh.opposite(halfedge_of[s]);
     const std::size_t border_head = corners[s];
     mesh.set_next(border, border_leaving[border_head]);
@@ -167,6 +167,28 @@ bool build_clean_triangle_mesh(const std::vector<Point>& points,
   }
   if (vertex_of_point) *vertex_of_point = std::move(vertex_of);
   return true;
+}
+
+}  // namespace clean_triangles
+
+// Builds `mesh` from the triangles `corners` (three point indices each, all below points.size())
+// when each has three distinct points, no oriented edge is used twice, no edge has more than two
+// faces, and the faces around each point form one fan: the mesh polygon_soup_to_polygon_mesh
+// builds, its edges numbered as Euler::add_face numbers them, face by face. Points no face uses
+// are left out and counted in `unused_points`; faces, and the used points, keep the soup's order.
+// Returns false and leaves `mesh` empty when the soup is not such a mesh. `vertex_of_point`, when
+// given, gets each point's vertex (a null index for an unused point).
+template <class Point>
+bool build_clean_triangle_mesh(const std::vector<Point>& points,
+                               const std::vector<std::size_t>& corners,
+                               CGAL::Surface_mesh<Point>& mesh, std::size_t& unused_points,
+                               std::vector<CGAL::SM_Vertex_index>* vertex_of_point = nullptr) {
+  constexpr std::size_t kNarrow = clean_triangles::kNone<std::uint32_t>;
+  if (points.size() < kNarrow && corners.size() < kNarrow)
+    return clean_triangles::build_with_indices<std::uint32_t>(points, corners, mesh, unused_points,
+                                                              vertex_of_point);
+  return clean_triangles::build_with_indices<std::size_t>(points, corners, mesh, unused_points,
+                                                          vertex_of_point);
 }
 
 }  // namespace internal
