@@ -1,5 +1,5 @@
 // Carries the corner attributes of a CGAL::Surface_mesh (Corner_attributes.h: texture coordinates,
-// normals and colours) through edge collapses, and keeps their seams.
+// both sets, normals and colours) through edge collapses, and keeps their seams.
 //
 // A seam edge is one whose two sides disagree at either end, or a border edge (an open chart stays
 // open). A vertex on no seam edge is free; on exactly two it lies along a seam; on one or three and
@@ -55,8 +55,8 @@ class Corner_attribute_carrier {
 
   // A policy that solves the kept vertex's values itself (Attribute_quadric_policies): it gives
   // the values of a collapse between two free vertices, at the new point (the other collapses keep
-  // their old seam values; a value it leaves NaN is interpolated), and hears of each collapse
-  // before it happens.
+  // their old seam values; a value it leaves NaN, or does not give, is interpolated), and hears of
+  // each collapse before it happens.
   struct Solver {
     std::function<void(Halfedge edge, const Point& x, Values& values)> free_collapse_values;
     std::function<void(Halfedge edge)> before_collapse;
@@ -368,7 +368,8 @@ class Corner_attribute_carrier {
       }
     const bool solved =
         m_solver.free_collapse_values && seam_edges_at(v0) == 0 && seam_edges_at(v1) == 0;
-    Corner_value solved_value = stored_value(profile.v0_v1());
+    // What the solver does not give stays NaN, and is interpolated below.
+    Corner_value solved_value{mesh.face(profile.v0_v1()), profile.v0_v1(), Attributes::no_values()};
     if (solved) m_solver.free_collapse_values(profile.v0_v1(), x, solved_value.values);
     std::vector<Corner_value> values;
     for (std::size_t i = 0; i < star.size(); ++i) {
@@ -389,17 +390,20 @@ class Corner_attribute_carrier {
       value.face = star[i];
       value.corner = corner;
       Values& v = value.values;
-      const bool uv_missing =
-          m_attributes.uvs && !(std::isfinite(v.uv[0]) && std::isfinite(v.uv[1]));
+      const auto finite = [](const auto& numbers) {
+        return std::all_of(numbers.begin(), numbers.end(),
+                           [](double c) { return std::isfinite(c); });
+      };
+      const bool uv_missing = m_attributes.uvs && !finite(v.uv);
       const bool normal_missing = m_attributes.normals && !std::isfinite(v.normal.squared_length());
-      const bool color_missing =
-          m_attributes.colors &&
-          !std::all_of(v.color.begin(), v.color.end(), [](double c) { return std::isfinite(c); });
-      if (uv_missing || normal_missing || color_missing) {
+      const bool color_missing = m_attributes.colors && !finite(v.color);
+      const bool second_uv_missing = m_attributes.second_uvs && !finite(v.second_uv);
+      if (uv_missing || normal_missing || color_missing || second_uv_missing) {
         const Values other = interpolated(star, root(i), x, star[i], corner, root).values;
         if (uv_missing) v.uv = other.uv;
         if (normal_missing) v.normal = other.normal;
         if (color_missing) v.color = other.color;
+        if (second_uv_missing) v.second_uv = other.second_uv;
       }
       values.push_back(value);
     }

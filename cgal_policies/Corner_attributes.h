@@ -1,9 +1,10 @@
 // Attributes on the corners of a CGAL::Surface_mesh, and the read-only facts about them: seam
 // edges, texture areas, the texture's extent. The corner of face(h) at target(h) is the
 // halfedge h, so texture coordinates, normals and colours are halfedge property maps, and a vertex
-// whose corners disagree lies on a seam. A face's material is a face property map (an index into
-// the material names that the file kept). A corner without a value holds NaN; a face without a
-// material, kNoMaterial.
+// whose corners disagree lies on a seam. A second set of texture coordinates (glTF's TEXCOORD_1,
+// often a lightmap's) is carried as the first is; the texture areas and extent are the first set's.
+// A face's material is a face property map (an index into the material names that the file kept). A
+// corner without a value holds NaN; a face without a material, kNoMaterial.
 #ifndef CGAL_POLICIES_CORNER_ATTRIBUTES_H
 #define CGAL_POLICIES_CORNER_ATTRIBUTES_H
 
@@ -37,7 +38,7 @@ class Corner_attributes {
 
   // Which maps a mesh has, or is to have.
   struct Kinds {
-    bool uvs = false, normals = false, colors = false, materials = false;
+    bool uvs = false, normals = false, colors = false, materials = false, second_uvs = false;
   };
 
   // The values of one corner; those the mesh has no map for, or that the corner lacks, are NaN.
@@ -45,6 +46,7 @@ class Corner_attributes {
     Uv uv;
     Vector normal;
     Color color;
+    Uv second_uv;
   };
 
   // The maps `mesh` already has.
@@ -52,7 +54,8 @@ class Corner_attributes {
       : uvs(find<typename Mesh::Halfedge_index, Uv>(mesh, kUvName)),
         normals(find<typename Mesh::Halfedge_index, Vector>(mesh, kNormalName)),
         colors(find<typename Mesh::Halfedge_index, Color>(mesh, kColorName)),
-        materials(find<typename Mesh::Face_index, std::uint32_t>(mesh, kMaterialName)) {}
+        materials(find<typename Mesh::Face_index, std::uint32_t>(mesh, kMaterialName)),
+        second_uvs(find<typename Mesh::Halfedge_index, Uv>(mesh, kSecondUvName)) {}
 
   // Adds the maps asked for (and keeps those `mesh` has), every value none.
   static Corner_attributes add(Mesh& mesh, const Kinds& kinds) {
@@ -67,15 +70,20 @@ class Corner_attributes {
     if (kinds.materials)
       mesh.template add_property_map<typename Mesh::Face_index, std::uint32_t>(kMaterialName,
                                                                                kNoMaterial);
+    if (kinds.second_uvs)
+      mesh.template add_property_map<typename Mesh::Halfedge_index, Uv>(kSecondUvName,
+                                                                        none.second_uv);
     return Corner_attributes(mesh);
   }
 
   Kinds kinds() const {
-    return {uvs.has_value(), normals.has_value(), colors.has_value(), materials.has_value()};
+    return {uvs.has_value(), normals.has_value(), colors.has_value(), materials.has_value(),
+            second_uvs.has_value()};
   }
 
   static Values no_values() {
-    return {{kNone, kNone}, Vector(kNone, kNone, kNone), {kNone, kNone, kNone, kNone}};
+    return {
+        {kNone, kNone}, Vector(kNone, kNone, kNone), {kNone, kNone, kNone, kNone}, {kNone, kNone}};
   }
 
   Values values(typename Mesh::Halfedge_index h) const {
@@ -83,6 +91,7 @@ class Corner_attributes {
     if (uvs) v.uv = (*uvs)[h];
     if (normals) v.normal = (*normals)[h];
     if (colors) v.color = (*colors)[h];
+    if (second_uvs) v.second_uv = (*second_uvs)[h];
     return v;
   }
 
@@ -91,15 +100,17 @@ class Corner_attributes {
     if (uvs) (*uvs)[h] = v.uv;
     if (normals) (*normals)[h] = v.normal;
     if (colors) (*colors)[h] = v.color;
+    if (second_uvs) (*second_uvs)[h] = v.second_uv;
   }
 
   // The values at barycentric weights w of a triangle whose corners hold `corner`: texture
-  // coordinates and colours blend linearly, normals blend and are made unit again. Colours are
-  // clamped to [0, 1], which rounding can overstep (the fuzzer found 1 + 2^-52).
+  // coordinates (both sets) and colours blend linearly, normals blend and are made unit again.
+  // Colours are clamped to [0, 1], which rounding can overstep (the fuzzer found 1 + 2^-52).
   static Values blend(const std::array<Values, 3>& corner, const std::array<double, 3>& w) {
-    Values v{{0, 0}, Vector(0, 0, 0), {0, 0, 0, 0}};
+    Values v{{0, 0}, Vector(0, 0, 0), {0, 0, 0, 0}, {0, 0}};
     for (int k = 0; k < 3; ++k) {
       for (int d = 0; d < 2; ++d) v.uv[d] += w[k] * corner[k].uv[d];
+      for (int d = 0; d < 2; ++d) v.second_uv[d] += w[k] * corner[k].second_uv[d];
       v.normal = v.normal + w[k] * corner[k].normal;
       for (int d = 0; d < 4; ++d) v.color[d] += w[k] * corner[k].color[d];
     }
@@ -116,6 +127,8 @@ class Corner_attributes {
       if (!same_number(a.normal[d], b.normal[d])) return false;
     for (int d = 0; d < 4; ++d)
       if (!same_number(a.color[d], b.color[d])) return false;
+    for (int d = 0; d < 2; ++d)
+      if (!same_number(a.second_uv[d], b.second_uv[d])) return false;
     return true;
   }
 
@@ -126,19 +139,20 @@ class Corner_attributes {
     if (found.materials) mesh.remove_property_map(*found.materials);
   }
 
-  // Removes the texture coordinates, normals and colours, and keeps the materials.
+  // Removes the texture coordinates (both sets), normals and colours, and keeps the materials.
   static void remove_corner_values(Mesh& mesh) {
     Corner_attributes found(mesh);
     if (found.uvs) mesh.remove_property_map(*found.uvs);
     if (found.normals) mesh.remove_property_map(*found.normals);
     if (found.colors) mesh.remove_property_map(*found.colors);
+    if (found.second_uvs) mesh.remove_property_map(*found.second_uvs);
   }
 
   bool any() const { return any_corner_values() || materials; }
-  bool any_corner_values() const { return uvs || normals || colors; }
+  bool any_corner_values() const { return uvs || normals || colors || second_uvs; }
 
-  // Whether the values on the two sides of the edge of `h` differ at either end, or it is a border:
-  // a seam edge.
+  // Whether the values on the two sides of the edge of `h` differ at either end (in any kind of
+  // value, either set of texture coordinates included), or it is a border: a seam edge.
   bool is_seam_edge(const Mesh& mesh, typename Mesh::Halfedge_index h) const {
     const auto o = mesh.opposite(h);
     if (mesh.is_border(h) || mesh.is_border(o)) return true;
@@ -174,6 +188,7 @@ class Corner_attributes {
   std::optional<Normal_map> normals;
   std::optional<Color_map> colors;
   std::optional<Material_map> materials;
+  std::optional<Uv_map> second_uvs;
 
  private:
   static bool same_number(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
@@ -187,13 +202,14 @@ class Corner_attributes {
         if (!same_number(p[d], q[d])) return false;
       return true;
     };
-    return same(uvs, 2) && same(normals, 3) && same(colors, 4);
+    return same(uvs, 2) && same(normals, 3) && same(colors, 4) && same(second_uvs, 2);
   }
 
   static constexpr const char* kUvName = "h:cgal_policies:uv";
   static constexpr const char* kNormalName = "h:cgal_policies:normal";
   static constexpr const char* kColorName = "h:cgal_policies:color";
   static constexpr const char* kMaterialName = "f:cgal_policies:material";
+  static constexpr const char* kSecondUvName = "h:cgal_policies:second_uv";
 
   template <class Index, class Value>
   static std::optional<typename Mesh::template Property_map<Index, Value>> find(const Mesh& mesh,

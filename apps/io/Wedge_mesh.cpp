@@ -38,6 +38,7 @@ Wedge_mesh wedge_mesh(const Mesh& mesh) {
         if (attributes.uvs) result.uvs.push_back(values.uv);
         if (attributes.normals) result.normals.push_back(values.normal);
         if (attributes.colors) result.colors.push_back(values.color);
+        if (attributes.second_uvs) result.second_uvs.push_back(values.second_uv);
       }
       triangle[k++] = wedge->second;
     }
@@ -82,6 +83,7 @@ Wedge_mesh cache_ordered(const Wedge_mesh& wedges) {
   move_values(wedges.uvs, result.uvs);
   move_values(wedges.normals, result.normals);
   move_values(wedges.colors, result.colors);
+  move_values(wedges.second_uvs, result.second_uvs);
   for (std::size_t i = 0; i < indices.size(); i += 3)
     result.triangles.push_back({remap[indices[i]], remap[indices[i + 1]], remap[indices[i + 2]]});
   return result;

@@ -18,6 +18,7 @@ struct Wedge_mesh {
   std::vector<std::array<double, 2>> uvs;               // per wedge; empty when the mesh has none
   std::vector<Kernel::Vector_3> normals;                // likewise
   std::vector<std::array<double, 4>> colors;            // likewise, RGBA in [0, 1]
+  std::vector<std::array<double, 2>> second_uvs;        // likewise
   std::vector<std::array<std::uint32_t, 3>> triangles;  // wedge indices, in the mesh's face order
   std::vector<std::uint32_t> materials;  // per triangle; empty without a material map
 };

@@ -393,15 +393,43 @@ bool uses(const tinygltf::Model& model, const std::string& extension) {
          model.extensionsUsed.end();
 }
 
-// The KHR_texture_transform of a texture that reads TEXCOORD_0 as the matrix it applies to them
-// (in glTF's convention, before the v turn), rows of three; the identity without one.
-std::array<double, 6> texture_transform(const tinygltf::TextureInfo& texture) {
-  std::array<double, 6> m = {1, 0, 0, 0, 1, 0};
+// Calls visit(info) for each texture reference of `material` (a tinygltf::Material, const or not),
+// the base colour texture first.
+template <class Material, class Visit>
+void for_each_texture(Material& material, const Visit& visit) {
+  visit(material.pbrMetallicRoughness.baseColorTexture);
+  visit(material.pbrMetallicRoughness.metallicRoughnessTexture);
+  visit(material.normalTexture);
+  visit(material.occlusionTexture);
+  visit(material.emissiveTexture);
+}
+
+// The texture coordinate set a texture reference reads: its KHR_texture_transform may name one,
+// which overrides the reference's own.
+template <class Texture_info>
+int texture_set(const Texture_info& texture) {
   const auto found = texture.extensions.find("KHR_texture_transform");
-  if (found == texture.extensions.end() || texture.texCoord != 0) return m;
-  const tinygltf::Value& t = found->second;
-  // A transform may name the set it reads, which overrides the texture's.
-  if (t.Has("texCoord") && t.Get("texCoord").GetNumberAsInt() != 0) return m;
+  if (found != texture.extensions.end() && found->second.Has("texCoord"))
+    return found->second.Get("texCoord").GetNumberAsInt();
+  return texture.texCoord;
+}
+
+// The KHR_texture_transform of the first texture of `material` that reads texture coordinate set
+// `set`, as the matrix it applies to them (in glTF's convention, before the v turn), rows of
+// three; the identity without one. A set has one transform baked into it, so the other textures
+// reading it are drawn without theirs.
+std::array<double, 6> texture_transform(const tinygltf::Material& material, int set) {
+  std::array<double, 6> m = {1, 0, 0, 0, 1, 0};
+  const tinygltf::Value* transform = nullptr;
+  bool found = false;
+  for_each_texture(material, [&](const auto& texture) {
+    if (found || texture.index < 0 || texture_set(texture) != set) return;
+    found = true;
+    const auto extension = texture.extensions.find("KHR_texture_transform");
+    if (extension != texture.extensions.end()) transform = &extension->second;
+  });
+  if (!transform) return m;
+  const tinygltf::Value& t = *transform;
   const auto pair = [&t](const char* key, double a, double b) {
     const tinygltf::Value& v = t.Get(key);
     return v.IsArray() && v.ArrayLen() == 2
@@ -418,6 +446,9 @@ std::array<double, 6> texture_transform(const tinygltf::TextureInfo& texture) {
 // Builds the soup primitive by primitive: a point for each glTF vertex a triangle uses, the
 // corner tables an entry for each glTF vertex.
 class Soup_builder {
+  // The kinds of corner values, in the order of m_any.
+  static constexpr std::size_t kKinds = 4;
+
  public:
   Soup_builder(const std::string& path, const tinygltf::Model& model)
       : m_path(path),
@@ -443,13 +474,15 @@ class Soup_builder {
     if (moved) transform(world, 1, positions);
 
     Corner_tables& tables = m_soup.corners;
-    const std::array<std::size_t, 3> base = {tables.uvs.size(), tables.normals.size(),
-                                             tables.colors.size()};
-    const std::array<bool, 3> with = {read_uvs(primitive, vertices, what),
-                                      read_normals(primitive, vertices, moved, world, what),
-                                      read_colors(primitive, vertices, what)};
-    const std::array<std::vector<std::vector<std::size_t>>*, 3> lists = {
-        &tables.polygon_uvs, &tables.polygon_normals, &tables.polygon_colors};
+    const std::array<std::size_t, kKinds> base = {tables.uvs.size(), tables.normals.size(),
+                                                  tables.colors.size(), tables.second_uvs.size()};
+    const std::array<bool, kKinds> with = {read_uvs(primitive, 0, vertices, what),
+                                           read_normals(primitive, vertices, moved, world, what),
+                                           read_colors(primitive, vertices, what),
+                                           read_uvs(primitive, 1, vertices, what)};
+    const std::array<std::vector<std::vector<std::size_t>>*, kKinds> lists = {
+        &tables.polygon_uvs, &tables.polygon_normals, &tables.polygon_colors,
+        &tables.polygon_second_uvs};
 
     const std::vector<std::size_t> corners = triangle_corners(primitive, vertices, what);
     if (primitive.material >= 0 && std::size_t(primitive.material) >= m_model.materials.size())
@@ -460,7 +493,7 @@ class Soup_builder {
     const bool mirrored = moved && determinant3(world) < 0;
     for (std::size_t t = 0; t < corners.size(); t += 3) {
       std::vector<std::size_t> polygon;
-      std::array<std::vector<std::size_t>, 3> entries;
+      std::array<std::vector<std::size_t>, kKinds> entries;
       for (std::size_t k : {std::size_t(0), mirrored ? std::size_t(2) : std::size_t(1),
                             mirrored ? std::size_t(1) : std::size_t(2)}) {
         const std::size_t v = corners[t + k];
@@ -469,15 +502,16 @@ class Soup_builder {
           m_soup.points.emplace_back(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]);
         }
         polygon.push_back(point_of_vertex[v]);
-        for (std::size_t kind = 0; kind < 3; ++kind)
+        for (std::size_t kind = 0; kind < kKinds; ++kind)
           entries[kind].push_back(with[kind] ? base[kind] + v : Corner_tables::kNoEntry);
       }
       m_soup.polygons.push_back(std::move(polygon));
-      for (std::size_t kind = 0; kind < 3; ++kind) lists[kind]->push_back(std::move(entries[kind]));
+      for (std::size_t kind = 0; kind < kKinds; ++kind)
+        lists[kind]->push_back(std::move(entries[kind]));
       tables.polygon_materials.push_back(primitive.material >= 0 ? std::uint32_t(primitive.material)
                                                                  : Corner_tables::kNoMaterial);
     }
-    for (std::size_t kind = 0; kind < 3; ++kind) m_any[kind] = m_any[kind] || with[kind];
+    for (std::size_t kind = 0; kind < kKinds; ++kind) m_any[kind] = m_any[kind] || with[kind];
   }
 
   // The soup, its points joined where they are equal; the corner lists of a kind no primitive
@@ -487,6 +521,7 @@ class Soup_builder {
     if (!m_any[0]) corners.polygon_uvs.clear();
     if (!m_any[1]) corners.polygon_normals.clear();
     if (!m_any[2]) corners.polygon_colors.clear();
+    if (!m_any[3]) corners.polygon_second_uvs.clear();
     if (std::all_of(corners.polygon_materials.begin(), corners.polygon_materials.end(),
                     [](std::uint32_t m) { return m == Corner_tables::kNoMaterial; }))
       corners.polygon_materials.clear();
@@ -521,24 +556,26 @@ class Soup_builder {
     return corners;
   }
 
-  bool read_uvs(const tinygltf::Primitive& primitive, std::size_t vertices,
+  // Texture coordinate set `set`, 0 or 1, into the corner table of that set.
+  bool read_uvs(const tinygltf::Primitive& primitive, int set, std::size_t vertices,
                 const std::string& what) {
-    const auto uv = primitive.attributes.find("TEXCOORD_0");
+    const std::string name = "TEXCOORD_" + std::to_string(set);
+    const auto uv = primitive.attributes.find(name);
     if (uv == primitive.attributes.end()) return false;
     const std::vector<double> values =
-        accessor_values(m_path, m_model, uv->second, m_rules.uv, what + " TEXCOORD_0");
-    check_vertex_count(values.size() / 2, vertices, what + " TEXCOORD_0");
-    check_finite(m_path, values, 2, what + ": the texture coordinate");
-    // The base colour texture's transform, baked in (the written materials leave it out).
+        accessor_values(m_path, m_model, uv->second, m_rules.uv, what + " " + name);
+    check_vertex_count(values.size() / 2, vertices, what + " " + name);
+    check_finite(m_path, values, 2, what + ": the texture coordinate (" + name + ")");
+    // The transform of the texture reading the set, baked in (the written materials leave it out).
     const std::array<double, 6> m =
         primitive.material >= 0 && std::size_t(primitive.material) < m_model.materials.size()
-            ? texture_transform(m_model.materials[std::size_t(primitive.material)]
-                                    .pbrMetallicRoughness.baseColorTexture)
-            : texture_transform(tinygltf::TextureInfo());
+            ? texture_transform(m_model.materials[std::size_t(primitive.material)], set)
+            : texture_transform(tinygltf::Material(), set);
+    std::vector<std::array<double, 2>>& table =
+        set == 0 ? m_soup.corners.uvs : m_soup.corners.second_uvs;
     for (std::size_t i = 0; i < values.size(); i += 2)
-      m_soup.corners.uvs.push_back(
-          texture_coordinates_of_gltf(m[0] * values[i] + m[1] * values[i + 1] + m[2],
-                                      m[3] * values[i] + m[4] * values[i + 1] + m[5]));
+      table.push_back(texture_coordinates_of_gltf(m[0] * values[i] + m[1] * values[i + 1] + m[2],
+                                                  m[3] * values[i] + m[4] * values[i + 1] + m[5]));
     return true;
   }
 
@@ -591,7 +628,8 @@ class Soup_builder {
   const Attribute_rules m_rules;
   const bool m_quantized;
   Polygon_soup m_soup;
-  std::array<bool, 3> m_any{};  // whether any primitive has texture coordinates, normals, colours
+  // Whether any primitive has texture coordinates, normals, colours, second texture coordinates.
+  std::array<bool, kKinds> m_any{};
 };
 
 // The file path of a relative URI reference: each %XX escape the byte it stands for. glTF's
@@ -645,14 +683,13 @@ std::shared_ptr<const tinygltf::Model> kept_looks(tinygltf::Model& model, const 
     }
     image.bufferView = -1;
   }
-  // The texture transform is baked into the texture coordinates (read_uvs).
+  // The texture transform is baked into the texture coordinates (read_uvs); the set it named, if
+  // any, becomes the texture's.
   for (tinygltf::Material& material : model.materials)
-    for (tinygltf::ExtensionMap* extensions :
-         {&material.pbrMetallicRoughness.baseColorTexture.extensions,
-          &material.pbrMetallicRoughness.metallicRoughnessTexture.extensions,
-          &material.normalTexture.extensions, &material.occlusionTexture.extensions,
-          &material.emissiveTexture.extensions})
-      extensions->erase("KHR_texture_transform");
+    for_each_texture(material, [](auto& texture) {
+      texture.texCoord = texture_set(texture);
+      texture.extensions.erase("KHR_texture_transform");
+    });
   looks->materials = std::move(model.materials);
   looks->textures = std::move(model.textures);
   looks->samplers = std::move(model.samplers);
@@ -1041,8 +1078,18 @@ void add_level(tinygltf::Model& model, const Wedge_mesh& wedges, bool quantized)
   }
   if (!wedges.normals.empty())
     shape.attributes["NORMAL"] = append_normals(model, wedges.normals, quantized);
-  if (!wedges.uvs.empty())
-    shape.attributes["TEXCOORD_0"] = append_uvs(model, wedges.uvs, quantized);
+  // glTF numbers the sets from 0 with no gap: a second set alone comes with a first set of
+  // corners without values (zeros).
+  if (!wedges.uvs.empty() || !wedges.second_uvs.empty()) {
+    const double none = std::numeric_limits<double>::quiet_NaN();
+    shape.attributes["TEXCOORD_0"] = append_uvs(
+        model,
+        wedges.uvs.empty() ? std::vector<std::array<double, 2>>(wedges.points.size(), {none, none})
+                           : wedges.uvs,
+        quantized);
+  }
+  if (!wedges.second_uvs.empty())
+    shape.attributes["TEXCOORD_1"] = append_uvs(model, wedges.second_uvs, quantized);
   if (!wedges.colors.empty())
     shape.attributes["COLOR_0"] = append_colors(model, wedges.colors, quantized);
   tinygltf::Mesh mesh;

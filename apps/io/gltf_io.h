@@ -27,13 +27,14 @@ struct Gltf_soup {
 // file has no scene), its positions and normals taken through its node's world transform (the
 // winding turned where the transform mirrors). Points and lines are skipped, as they have no
 // surface; triangle strips and fans are bad input. Each glTF vertex gives the corner tables an
-// entry of its NORMAL, TEXCOORD_0 (float, or normalized unsigned byte or short; v from the image's
-// top, glTF's origin, made 1 - v, from its bottom as in OBJ and PLY; the base colour texture's
-// KHR_texture_transform applied) and COLOR_0 (RGB, alpha 1, or RGBA; the same types), and each
-// primitive its material (names: the material's name, or "material_<i>" when it has none).
+// entry of its NORMAL, TEXCOORD_0 and TEXCOORD_1 (float, or normalized unsigned byte or short; v
+// from the image's top, glTF's origin, made 1 - v, from its bottom as in OBJ and PLY; each set
+// with the KHR_texture_transform of the material's first texture that reads it, the base colour
+// texture first, applied) and COLOR_0 (RGB, alpha 1, or RGBA; the same types), and each primitive
+// its material (names: the material's name, or "material_<i>" when it has none).
 // KHR_mesh_quantization's integer positions, normals and texture coordinates, sparse accessors,
 // EXT_meshopt_compression's views (gltf_meshopt.h) and KHR_draco_mesh_compression's primitives
-// (gltf_draco.h) are read as their values; TEXCOORD_1, skins and morph targets are skipped. The
+// (gltf_draco.h) are read as their values; skins and morph targets are skipped. The
 // points are joined where exactly equal (join_equal_points), so that the vertices a UV seam or a
 // primitive boundary splits become one vertex whose corners disagree. Throws Io_error (unreadable
 // input, "<path>: <cause>") for a file tinygltf cannot load (malformed JSON or GLB, a buffer file
@@ -54,17 +55,19 @@ std::vector<Gltf_soup> read_gltf_levels(const std::string& path, bool binary);
 // The bytes of a glTF file (GLB when `binary`) holding `levels`, each a mesh of its own and a node
 // holding it: one vertex per wedge (Wedge_mesh.h), one primitive per material in the order of the
 // material indices. A corner without a value gets 0, or white for a colour, as glTF has no "none";
-// texture coordinates are written with v made 1 - v, as glTF counts it from the image's top.
+// texture coordinates are written with v made 1 - v, as glTF counts it from the image's top. A
+// second set of texture coordinates is TEXCOORD_1, and comes with a TEXCOORD_0 (of zeros when the
+// mesh has no first set), as glTF numbers the sets without a gap.
 // `encoding` says how the vertices are stored:
 // - float32: float positions, normals, texture coordinates and RGBA colours (glTF has no
 //   doubles), u32 indices.
 // - quantized (KHR_mesh_quantization, required): the triangles and wedges in cache_ordered's order
 //   (Wedge_mesh.h), as gltfpack writes them; positions as u16 steps of 1/65535 of the level's
 //   largest bounding-box side, the level's node translated to the box's lowest corner and scaled
-//   by the step; unit normals as normalized i8; texture coordinates as normalized u16 when every
-//   one lies in [0, 1], normalized i16 when every one lies in [-1, 1], float otherwise; colours as
-//   normalized u8; u16 indices when the level has
-//   at most 65535 vertices, u32 otherwise. Each vertex attribute's elements padded to 4 bytes.
+//   by the step; unit normals as normalized i8; each set of texture coordinates as normalized u16
+//   when every one lies in [0, 1], normalized i16 when every one lies in [-1, 1], float otherwise;
+//   colours as normalized u8; u16 indices when the level has at most 65535 vertices, u32
+//   otherwise. Each vertex attribute's elements padded to 4 bytes.
 // - meshopt: the quantized views compressed by meshoptimizer (EXT_meshopt_compression, required;
 //   encode_meshopt_views), their uncompressed layout in a fallback buffer without data.
 // The scene holds the first level's node; with more than one level, that node carries MSFT_lod (the

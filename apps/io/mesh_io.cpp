@@ -98,13 +98,14 @@ using Attributes = cgal_policies::Corner_attributes<Point>;
 // The maps a soup's corner tables fill.
 Attributes::Kinds kinds_of(const Corner_tables& corners) {
   return {!corners.polygon_uvs.empty(), !corners.polygon_normals.empty(),
-          !corners.polygon_colors.empty(), !corners.polygon_materials.empty()};
+          !corners.polygon_colors.empty(), !corners.polygon_materials.empty(),
+          !corners.polygon_second_uvs.empty()};
 }
 
 bool has_corner_attributes(const Corner_tables* corners) {
   if (!corners) return false;
   const Attributes::Kinds kinds = kinds_of(*corners);
-  return kinds.uvs || kinds.normals || kinds.colors || kinds.materials;
+  return kinds.uvs || kinds.normals || kinds.colors || kinds.materials || kinds.second_uvs;
 }
 
 // Puts the attributes of `corners` on the mesh built from `polygons`, whose face i is polygon i;
@@ -128,6 +129,7 @@ void set_corner_attributes(Mesh& mesh, const std::vector<Polygon>& polygons,
       copy(attributes.uvs, corners.polygon_uvs, corners.uvs);
       copy(attributes.normals, corners.polygon_normals, corners.normals);
       copy(attributes.colors, corners.polygon_colors, corners.colors);
+      copy(attributes.second_uvs, corners.polygon_second_uvs, corners.second_uvs);
     }
   }
 }
@@ -263,7 +265,15 @@ std::vector<std::string> write_files_atomically(const std::vector<Lod_level>& le
       return write_bytes(temporary, ply_bytes(wedge_mesh(mesh)));
     return CGAL::IO::write_polygon_mesh(temporary, mesh, CGAL::parameters::stream_precision(17));
   });
-  return library.left_out;
+  std::vector<std::string> left_out = library.left_out;
+  // OBJ and PLY hold one set of texture coordinates; the others no corner values at all.
+  const bool second_uvs = std::any_of(levels.begin(), levels.end(), [](const Lod_level& level) {
+    return Attributes(*level.mesh).second_uvs.has_value();
+  });
+  if (second_uvs && (obj || extension == ".ply"))
+    left_out.push_back(path + ": the second texture coordinates (glTF's TEXCOORD_1); " +
+                       (obj ? "OBJ" : "PLY") + " holds one set, written without them");
+  return left_out;
 }
 
 }  // namespace

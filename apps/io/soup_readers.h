@@ -21,18 +21,20 @@ namespace cgal_policies {
 namespace io {
 
 // What an OBJ (or PLY) file's corners and faces carry besides their points: its tables of texture
-// coordinates, normals and colours (red, green, blue, alpha in [0, 1]), and for each polygon the
-// table entry of each corner (kNoEntry where
-// the corner names none; the lists are empty when no corner names one); its material libraries as
-// the file names them, the material names its faces use, and each polygon's material (an index
-// into the names, or kNoMaterial; empty when no face has one).
+// coordinates, normals and colours (red, green, blue, alpha in [0, 1]), and of a glTF file's
+// second texture coordinates too, and for each polygon the table entry of each corner (kNoEntry
+// where the corner names none; the lists are empty when no corner names one); its material
+// libraries as the file names them, the material names its faces use, and each polygon's material
+// (an index into the names, or kNoMaterial; empty when no face has one).
 struct Corner_tables {
   static constexpr std::size_t kNoEntry = std::size_t(-1);
   static constexpr std::uint32_t kNoMaterial = std::uint32_t(-1);
   std::vector<std::array<double, 2>> uvs;
   std::vector<Kernel::Vector_3> normals;
   std::vector<std::array<double, 4>> colors;
-  std::vector<std::vector<std::size_t>> polygon_uvs, polygon_normals, polygon_colors;
+  std::vector<std::array<double, 2>> second_uvs;
+  std::vector<std::vector<std::size_t>> polygon_uvs, polygon_normals, polygon_colors,
+      polygon_second_uvs;
   std::vector<std::string> material_libraries, material_names;
   std::vector<std::uint32_t> polygon_materials;
 };

@@ -894,7 +894,7 @@ Mesh painted_cube(int per_side = 4) {
   Mesh mesh = test_meshes::six_sided_cube(per_side);
   for (const auto v : mesh.vertices())
     mesh.point(v) = mesh.point(v) + apps::Kernel::Vector_3(0.1, 0.2, 1.0 / 3);
-  const Attributes a = Attributes::add(mesh, {true, true, true, true});
+  const Attributes a = Attributes::add(mesh, {true, true, true, true, false});
   for (const auto f : mesh.faces()) {
     const int side = test_meshes::cube_side(mesh, f);
     (*a.materials)[f] = std::uint32_t(side % 2);
@@ -1530,8 +1530,9 @@ TEST(Gltf, ObjLevelsOfAGltfShareOneLibraryWithinTheFileLimit) {
 
 // The unit square as KHR_mesh_quantization writes it: unnormalized u16 positions that the node
 // scales by a half, sparse (all zero, three of them substituted), normalized i8 normals,
-// unnormalized u8 texture coordinates that the material's KHR_texture_transform scales and
-// moves, a second set of them, u8 indices.
+// unnormalized u8 texture coordinates that the base colour texture's KHR_texture_transform scales
+// and moves, a second set of them (u8, 0 or 2) that the occlusion texture reads through a transform
+// of its own (scaled by a half, moved by (1/4, 0)), which names the set, u8 indices.
 Gltf_builder quantized_square() {
   Gltf_builder b;
   const int substitutes = b.accessor(std::vector<std::uint16_t>{2, 0, 0, 0, 2, 0, 2, 2, 0},
@@ -1555,9 +1556,8 @@ Gltf_builder quantized_square() {
   const int uvs = b.accessor(std::vector<std::uint8_t>{0, 0, 4, 0, 0, 4, 4, 4}, kUnsignedByte,
                              TINYGLTF_TYPE_VEC2);
   tinygltf::Primitive square = triangles(position, indices, uvs, 0);
-  // A second set, which the mesh has no place for: skipped.
-  square.attributes["TEXCOORD_1"] =
-      b.accessor(std::vector<std::uint8_t>(8, 9), kUnsignedByte, TINYGLTF_TYPE_VEC2);
+  square.attributes["TEXCOORD_1"] = b.accessor(std::vector<std::uint8_t>{0, 0, 2, 0, 0, 2, 2, 2},
+                                               kUnsignedByte, TINYGLTF_TYPE_VEC2);
   square.attributes["NORMAL"] =
       b.accessor(std::vector<std::int8_t>{0, 0, 127, 0, 0, 127, 0, 0, 127, 0, 0, 127},
                  TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_TYPE_VEC3, true);
@@ -1572,6 +1572,15 @@ Gltf_builder quantized_square() {
       tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(0.0), tinygltf::Value(0.5)});
   b.model.materials[0].pbrMetallicRoughness.baseColorTexture.extensions["KHR_texture_transform"] =
       tinygltf::Value(transform);
+  tinygltf::Value::Object lightmap_transform;
+  lightmap_transform["scale"] =
+      tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(0.5), tinygltf::Value(0.5)});
+  lightmap_transform["offset"] =
+      tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(0.25), tinygltf::Value(0.0)});
+  lightmap_transform["texCoord"] = tinygltf::Value(1);
+  b.model.materials[0].occlusionTexture.index = 0;
+  b.model.materials[0].occlusionTexture.extensions["KHR_texture_transform"] =
+      tinygltf::Value(lightmap_transform);
   b.place({square}, {});
   b.model.nodes[0].scale = {0.5, 0.5, 0.5};
   b.model.extensionsUsed = {"KHR_mesh_quantization", "KHR_texture_transform"};
@@ -1600,6 +1609,20 @@ const std::vector<std::array<double, 5>> kSquareCorners = {{0, 0, 0, 0, 0.5}, {0
                                                            {0, 1, 0, 0, 0},   {1, 0, 0, 1, 0.5},
                                                            {1, 1, 0, 1, 0},   {1, 1, 0, 1, 0}};
 
+// Whether every corner's second texture coordinate is what the square's second set gives at its
+// vertex (x, y): 2 (x, y) scaled by a half and moved by (1/4, 0), then v turned: (x + 1/4, 1 - y),
+// exactly.
+bool square_second_uvs_are_exact(const Mesh& mesh) {
+  const Attributes a(mesh);
+  if (!a.second_uvs) return false;
+  for (const auto h : mesh.halfedges()) {
+    if (mesh.is_border(h)) continue;
+    const apps::Point& p = mesh.point(mesh.target(h));
+    if ((*a.second_uvs)[h] != Attributes::Uv{p.x() + 0.25, 1 - p.y()}) return false;
+  }
+  return true;
+}
+
 TEST(Gltf, QuantizedSparseAndTransformedAccessorsReadAsTheirValues) {
   const fs::path folder = scratch_folder("gltf_quantized");
   const fs::path in = folder / "square.gltf";
@@ -1612,16 +1635,21 @@ TEST(Gltf, QuantizedSparseAndTransformedAccessorsReadAsTheirValues) {
   bool normals_up = false;
   EXPECT_EQ(points_and_uvs(mesh, &normals_up), kSquareCorners);
   EXPECT_TRUE(normals_up);
-  // The transform is in the coordinates now: a written file has neither it nor the quantization.
+  EXPECT_TRUE(square_second_uvs_are_exact(mesh));
+  // The transforms are in the coordinates now: a written file has neither them nor the
+  // quantization, and the occlusion texture reads the set its transform named.
   ASSERT_TRUE(report.materials.gltf);
-  EXPECT_TRUE(report.materials.gltf->materials.at(0)
-                  .pbrMetallicRoughness.baseColorTexture.extensions.empty());
+  const tinygltf::Material& material = report.materials.gltf->materials.at(0);
+  EXPECT_TRUE(material.pbrMetallicRoughness.baseColorTexture.extensions.empty());
+  EXPECT_TRUE(material.occlusionTexture.extensions.empty());
+  EXPECT_EQ(material.occlusionTexture.texCoord, 1);
   EXPECT_TRUE(report.materials.gltf->extensionsUsed.empty());
   const fs::path out = folder / "out.glb";
   apps::write_mesh_atomically(mesh, out.string(), report.materials);
-  EXPECT_EQ(points_and_uvs(apps::read_triangle_mesh(out.string(), nullptr,
-                                                    apps::Corner_attribute_reading::keep)),
-            kSquareCorners);
+  const Mesh written =
+      apps::read_triangle_mesh(out.string(), nullptr, apps::Corner_attribute_reading::keep);
+  EXPECT_EQ(points_and_uvs(written), kSquareCorners);
+  EXPECT_TRUE(square_second_uvs_are_exact(written));
   EXPECT_EQ(read_text(out).find("KHR_"), std::string::npos);
 
   // Integer positions are glTF only with the extension; other required extensions are refused.
@@ -1645,6 +1673,102 @@ TEST(Gltf, QuantizedSparseAndTransformedAccessorsReadAsTheirValues) {
   EXPECT_EQ(cause(instanced),
             ": requires the extension EXT_mesh_gpu_instancing, which this reader does not "
             "support");
+  fs::remove_all(folder);
+}
+
+// A second set of texture coordinates (a lightmap's) that is an affine function of the position:
+// written in every encoding, each set in the accessor its values fit, and read back within a step;
+// an OBJ or PLY file holds one set, and the writer says in one line that it left the second out.
+TEST(Gltf, ASecondUvSetIsWrittenInEveryEncodingAndObjAndPlySayTheyLeaveItOut) {
+  const fs::path folder = scratch_folder("gltf_second_uvs");
+  Mesh mesh = test_meshes::flat_grid(4);
+  const auto lightmap = [](const apps::Point& p) {
+    return Attributes::Uv{p.x() / 8 + 0.25, p.y() / 5};
+  };
+  test_meshes::paint_corners(
+      mesh,
+      [](Mesh::Face_index, const apps::Point& p) {
+        return Attributes::Uv{p.x(), p.y()};
+      },
+      false);
+  test_meshes::paint_second_uvs(
+      mesh, [&](Mesh::Face_index, const apps::Point& p) { return lightmap(p); });
+  // Position steps are 4 / 65535: a point moves by half of one at most, its field by a fifth of
+  // that.
+  const double position_step = 4.0 / 65535;
+  for (const auto& [encoding, tolerance, component_type] :
+       {std::make_tuple(apps::Gltf_encoding::float32, 1e-7, kFloat),
+        std::make_tuple(apps::Gltf_encoding::quantized, 0.5 / 65535 + position_step / 10 + 1e-12,
+                        kUnsignedShort),
+        std::make_tuple(apps::Gltf_encoding::meshopt, 0.5 / 65535 + position_step / 10 + 1e-12,
+                        kUnsignedShort)}) {
+    SCOPED_TRACE(int(encoding));
+    const fs::path out = folder / "grid.gltf";
+    EXPECT_TRUE(apps::write_mesh_atomically(mesh, out.string(), {}, encoding).empty());
+    const nlohmann::json gltf = gltf_json(out);
+    const nlohmann::json& attributes = gltf["meshes"][0]["primitives"][0]["attributes"];
+    ASSERT_TRUE(attributes.contains("TEXCOORD_1"));
+    const nlohmann::json& accessor = gltf["accessors"][attributes["TEXCOORD_1"].get<std::size_t>()];
+    EXPECT_EQ(accessor["componentType"], component_type);
+    EXPECT_EQ(accessor.value("normalized", false), component_type != kFloat);
+    const Mesh read =
+        apps::read_triangle_mesh(out.string(), nullptr, apps::Corner_attribute_reading::keep);
+    const Attributes a(read);
+    ASSERT_TRUE(a.uvs && a.second_uvs);
+    EXPECT_EQ(read.number_of_faces(), mesh.number_of_faces());
+    for (const auto h : read.halfedges()) {
+      if (read.is_border(h)) continue;
+      const Attributes::Uv expected = lightmap(read.point(read.target(h)));
+      EXPECT_NEAR((*a.second_uvs)[h][0], expected[0], tolerance);
+      EXPECT_NEAR((*a.second_uvs)[h][1], expected[1], tolerance);
+    }
+  }
+  for (const auto& [extension, format] :
+       {std::make_pair(".obj", "OBJ"), std::make_pair(".ply", "PLY")}) {
+    const fs::path out = folder / (std::string("grid") + extension);
+    EXPECT_EQ(apps::write_mesh_atomically(mesh, out.string()),
+              std::vector<std::string>{
+                  out.string() + ": the second texture coordinates (glTF's TEXCOORD_1); " +
+                  std::string(format) + " holds one set, written without them"});
+    const Attributes a(
+        apps::read_triangle_mesh(out.string(), nullptr, apps::Corner_attribute_reading::keep));
+    EXPECT_TRUE(a.uvs && !a.second_uvs);
+  }
+  fs::remove_all(folder);
+}
+
+// A second set that does not match its primitive is bad input, one line, as the first set is.
+TEST(Gltf, ABadSecondUvSetIsOneBadInputLine) {
+  const fs::path folder = scratch_folder("gltf_bad_second_uvs");
+  const fs::path in = folder / "square.gltf";
+  const auto cause = [&](Gltf_builder b, const tinygltf::Accessor& second) {
+    b.model.accessors.push_back(second);
+    b.model.meshes[0].primitives[0].attributes["TEXCOORD_1"] = int(b.model.accessors.size() - 1);
+    b.write(in);
+    try {
+      apps::read_triangle_mesh(in.string(), nullptr, apps::Corner_attribute_reading::keep);
+    } catch (const apps::Io_error& e) {
+      EXPECT_EQ(e.kind(), apps::Io_error::Kind::unreadable_input);
+      return std::string(e.what()).substr(in.string().size());
+    }
+    return std::string("read");
+  };
+  const Gltf_builder square = quantized_square();
+  const tinygltf::Accessor second = square.model.accessors.at(
+      std::size_t(square.model.meshes[0].primitives[0].attributes.at("TEXCOORD_1")));
+  tinygltf::Accessor short_one = second;
+  short_one.count = 3;
+  EXPECT_EQ(cause(square, short_one), ": mesh 0 primitive 0 TEXCOORD_1: 3 values for 4 vertices");
+  tinygltf::Accessor scalar = second;
+  scalar.type = TINYGLTF_TYPE_SCALAR;
+  EXPECT_EQ(cause(square, scalar), ": mesh 0 primitive 0 TEXCOORD_1 (accessor " +
+                                       std::to_string(square.model.accessors.size()) +
+                                       "): unsupported element or component type");
+  tinygltf::Accessor past = second;
+  past.count = 5;
+  EXPECT_EQ(cause(square, past), ": mesh 0 primitive 0 TEXCOORD_1 (accessor " +
+                                     std::to_string(square.model.accessors.size()) +
+                                     "): reaches past its bufferView");
   fs::remove_all(folder);
 }
 

@@ -2,7 +2,8 @@
 # The ctest test gltf_validator: simplify writes each shipped textured mesh (bob's map_Kd
 # embedded), the vertex-colour PLY and glTF files other tools made (gltfpack, gltf-pipeline's
 # Draco) as .glb and .gltf, bob with its texture missing, then bob with its texture as a data URI,
-# then bob as a chain of levels of detail (--lod, MSFT_lod), then spot, the vertex-colour PLY and
+# then bob with a second set of texture coordinates (TEXCOORD_1) in each encoding, then bob as a
+# chain of levels of detail (--lod, MSFT_lod), then spot, the vertex-colour PLY and
 # bob's chain in the quantized and meshopt encodings (--gltf-encoding), and the Khronos
 # glTF-Validator (validate_gltf.mjs) must find no error in any of them; its warnings are printed.
 # Exits 77, which ctest counts as skipped, without node or the validator, and in CI's sanitized
@@ -51,6 +52,27 @@ for extension in glb gltf; do
   "$simplify" "$work/bob_textured_input.gltf" "$work/bob_textured.$extension" 0.5 --quiet
   outputs+=("$work/bob_textured.$extension")
 done
+# bob's output with a second set of texture coordinates (TEXCOORD_1, a copy of the first) that
+# an occlusion texture reads, simplified again in each encoding: both sets are written.
+node -e 'const fs = require("fs"), [gltf, out] = process.argv.slice(1);
+  const g = JSON.parse(fs.readFileSync(gltf));
+  for (const mesh of g.meshes)
+    for (const p of mesh.primitives) p.attributes.TEXCOORD_1 = p.attributes.TEXCOORD_0;
+  for (const m of g.materials)
+    m.occlusionTexture = {index: m.pbrMetallicRoughness.baseColorTexture.index, texCoord: 1};
+  fs.writeFileSync(out, JSON.stringify(g));' "$work/bob_tri.gltf" "$work/bob_lightmap_input.gltf"
+for encoding in float quantized meshopt; do
+  for extension in glb gltf; do
+    "$simplify" "$work/bob_lightmap_input.gltf" "$work/bob_lightmap_$encoding.$extension" 0.5 \
+      --quiet --gltf-encoding $encoding
+    outputs+=("$work/bob_lightmap_$encoding.$extension")
+  done
+done
+node -e 'const g = JSON.parse(require("fs").readFileSync(process.argv[1]));
+  if (!("TEXCOORD_1" in g.meshes[0].primitives[0].attributes)) {
+    console.error(`${process.argv[1]}: no TEXCOORD_1`);
+    process.exit(1);
+  }' "$work/bob_lightmap_float.gltf"
 # A chain of levels of detail in one file (MSFT_lod), textured: bob with its map_Kd embedded; the
 # finest level's node must name the three coarser ones.
 for extension in glb gltf; do

@@ -54,15 +54,21 @@ TEST(CarriedAttributes, ALinearFieldOnAFlatMeshIsReproducedExactly) {
   const auto color_field = [](Mesh::Face_index, const Point& p) {
     return std::array<double, 4>{0.05 * p.x() + 0.02 * p.y(), 0.9 - 0.04 * p.y(), 0.5, 1};
   };
+  // The second set (a lightmap's): carried as the first is, though no quadric weighs it.
+  const auto second_field = [](Mesh::Face_index, const Point& p) {
+    return std::array<double, 2>{0.5 - 0.04 * p.y(), 0.07 * p.x() + 0.125};
+  };
   for (const std::string& policy : kCarryingPolicies) {
     Mesh mesh = flat_grid(10);
     paint_corners(mesh, field, true);
     paint_colors(mesh, color_field);
+    paint_second_uvs(mesh, second_field);
     const cgal_policies::Simplification_report outcome = simplify(mesh, policy, 20);
     EXPECT_TRUE(outcome.attributes_carried) << policy;
     EXPECT_LT(mesh.number_of_faces(), 200u) << policy;
     const Attributes attributes(mesh);
-    ASSERT_TRUE(attributes.uvs && attributes.normals && attributes.colors) << policy;
+    ASSERT_TRUE(attributes.uvs && attributes.normals && attributes.colors && attributes.second_uvs)
+        << policy;
     for (auto h : halfedges(mesh)) {
       if (mesh.is_border(h)) continue;
       const auto expected = field(face(h, mesh), mesh.point(target(h, mesh)));
@@ -72,8 +78,47 @@ TEST(CarriedAttributes, ALinearFieldOnAFlatMeshIsReproducedExactly) {
       for (int d = 0; d < 4; ++d)
         EXPECT_NEAR((*attributes.colors)[h][d], expected_color[d], 1e-12) << policy;
       EXPECT_EQ((*attributes.normals)[h], Kernel::Vector_3(0, 0, 1)) << policy;
+      const auto expected_second = second_field(face(h, mesh), mesh.point(target(h, mesh)));
+      EXPECT_NEAR((*attributes.second_uvs)[h][0], expected_second[0], 1e-12) << policy;
+      EXPECT_NEAR((*attributes.second_uvs)[h][1], expected_second[1], 1e-12) << policy;
     }
     for (auto f : faces(mesh)) EXPECT_GT(uv_area(mesh, f), 0) << policy;
+  }
+}
+
+// A seam of the second set alone, where the first set and the normals agree: the corners of
+// x = 5 disagree only in their second coordinates, which jump by 1 across it. Every policy keeps
+// the seam, so that each face's corners still read the field of their side, exactly.
+TEST(CarriedAttributes, ASeamOfTheSecondUvSetAloneIsKept) {
+  const auto side = [](const Mesh& mesh, Mesh::Face_index f) {
+    double x = 0;
+    for (auto v : vertices_around_face(halfedge(f, mesh), mesh)) x += mesh.point(v).x();
+    return x < 15 ? 0.0 : 1.0;  // the centroid's x, times 3, against the seam's
+  };
+  for (const std::string& policy : kCarryingPolicies) {
+    Mesh mesh = flat_grid(10);
+    paint_corners(
+        mesh,
+        [](Mesh::Face_index, const Point& p) {
+          return std::array<double, 2>{p.x() / 10, p.y() / 10};
+        },
+        true);
+    paint_second_uvs(mesh, [&](Mesh::Face_index f, const Point& p) {
+      return std::array<double, 2>{p.x() / 10 + side(mesh, f), p.y() / 10};
+    });
+    const cgal_policies::Corner_attribute_carrier<Point> before(mesh);
+    for (auto v : vertices(mesh))
+      EXPECT_EQ(before.seam_edges_at(v) > 0, mesh.point(v).x() == 5 || mesh.is_border(v)) << policy;
+    simplify(mesh, policy, 20);
+    const Attributes attributes(mesh);
+    ASSERT_TRUE(attributes.second_uvs) << policy;
+    for (auto h : halfedges(mesh)) {
+      if (mesh.is_border(h)) continue;
+      const Point& p = mesh.point(target(h, mesh));
+      const double shift = side(mesh, face(h, mesh));
+      EXPECT_NEAR((*attributes.second_uvs)[h][0], p.x() / 10 + shift, 1e-12) << policy;
+      EXPECT_NEAR((*attributes.second_uvs)[h][1], p.y() / 10, 1e-12) << policy;
+    }
   }
 }
 

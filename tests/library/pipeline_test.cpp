@@ -1123,7 +1123,8 @@ TEST(StreamedRun, KeepsWhatAPartitionedRunKeepsOnTheBunny) {
 // Partitioned jobs: the steps of a partitioned run handing their work on through files
 // (Simplification_pipeline::cut, simplify_part, stitch; internal/raw_mesh_file.h).
 
-// A sphere with texture coordinates, normals, colours and materials on its corners.
+// A sphere with texture coordinates (both sets, whose seams differ), normals, colours and
+// materials on its corners.
 Mesh painted_sphere() {
   Mesh sphere = loop_sphere(4);
   paint_corners(
@@ -1135,8 +1136,11 @@ Mesh painted_sphere() {
   paint_colors(sphere, [](Mesh::Face_index f, const Point& p) {
     return std::array<double, 4>{std::abs(p.x()), 0.5, double(std::size_t(f) % 2), 1};
   });
+  paint_second_uvs(sphere, [](Mesh::Face_index, const Point& p) {
+    return std::array<double, 2>{p.y() / 2 + 0.5, p.x() > 0 ? p.z() : p.z() + 2};
+  });
   const auto materials =
-      cgal_policies::Corner_attributes<Point>::add(sphere, {false, false, false, true});
+      cgal_policies::Corner_attributes<Point>::add(sphere, {false, false, false, true, false});
   for (const auto f : sphere.faces()) (*materials.materials)[f] = std::uint32_t(f) % 3;
   return sphere;
 }

@@ -164,7 +164,7 @@ inline std::array<double, 2> cube_chart(int k, const Point& p) {
 template <class Uv_of>
 void paint_corners(Mesh& mesh, const Uv_of& uv_of, bool with_normals) {
   const auto attributes =
-      cgal_policies::Corner_attributes<Point>::add(mesh, {true, with_normals, false, false});
+      cgal_policies::Corner_attributes<Point>::add(mesh, {true, with_normals, false, false, false});
   for (auto h : halfedges(mesh)) {
     if (mesh.is_border(h)) continue;
     (*attributes.uvs)[h] = uv_of(face(h, mesh), mesh.point(target(h, mesh)));
@@ -176,10 +176,21 @@ void paint_corners(Mesh& mesh, const Uv_of& uv_of, bool with_normals) {
 template <class Color_of>
 void paint_colors(Mesh& mesh, const Color_of& color_of) {
   const auto attributes =
-      cgal_policies::Corner_attributes<Point>::add(mesh, {false, false, true, false});
+      cgal_policies::Corner_attributes<Point>::add(mesh, {false, false, true, false, false});
   for (auto h : halfedges(mesh))
     if (!mesh.is_border(h))
       (*attributes.colors)[h] = color_of(face(h, mesh), mesh.point(target(h, mesh)));
+}
+
+// Sets every corner's second texture coordinate (glTF's TEXCOORD_1) from its face and the point
+// of its vertex.
+template <class Uv_of>
+void paint_second_uvs(Mesh& mesh, const Uv_of& uv_of) {
+  const auto attributes =
+      cgal_policies::Corner_attributes<Point>::add(mesh, {false, false, false, false, true});
+  for (auto h : halfedges(mesh))
+    if (!mesh.is_border(h))
+      (*attributes.second_uvs)[h] = uv_of(face(h, mesh), mesh.point(target(h, mesh)));
 }
 
 // Twice the signed area of a face's texture triangle.
