@@ -96,13 +96,7 @@ TEST(CarriedAttributes, ASeamOfTheSecondUvSetAloneIsKept) {
     return x < 15 ? 0.0 : 1.0;  // the centroid's x, times 3, against the seam's
   };
   for (const std::string& policy : kCarryingPolicies) {
-    Mesh mesh = flat_grid(10);
-    paint_corners(
-        mesh,
-        [](Mesh::Face_index, const Point& p) {
-          return std::array<double, 2>{p.x() / 10, p.y() / 10};
-        },
-        true);
+    Mesh mesh = textured_grid(10, true);
     paint_second_uvs(mesh, [&](Mesh::Face_index f, const Point& p) {
       return std::array<double, 2>{p.x() / 10 + side(mesh, f), p.y() / 10};
     });

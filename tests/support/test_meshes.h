@@ -25,6 +25,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -159,38 +160,42 @@ inline std::array<double, 2> cube_chart(int k, const Point& p) {
   return {k + s[k] / 4, t[k] / 4};
 }
 
+// Adds the maps `kinds` names and sets each corner's value in `map` (one of them) from its face and
+// the point of its vertex.
+template <class Map, class Value_of>
+void paint_corner_map(Mesh& mesh, const cgal_policies::Corner_attributes<Point>::Kinds& kinds,
+                      std::optional<Map> cgal_policies::Corner_attributes<Point>::*map,
+                      const Value_of& value_of) {
+  const auto attributes = cgal_policies::Corner_attributes<Point>::add(mesh, kinds);
+  for (auto h : halfedges(mesh))
+    if (!mesh.is_border(h))
+      (*(attributes.*map))[h] = value_of(face(h, mesh), mesh.point(target(h, mesh)));
+}
+
 // Sets every corner's texture coordinate from its face and the point of its vertex (and its
 // normal to +z, when asked).
 template <class Uv_of>
 void paint_corners(Mesh& mesh, const Uv_of& uv_of, bool with_normals) {
-  const auto attributes =
-      cgal_policies::Corner_attributes<Point>::add(mesh, {true, with_normals, false, false, false});
-  for (auto h : halfedges(mesh)) {
-    if (mesh.is_border(h)) continue;
-    (*attributes.uvs)[h] = uv_of(face(h, mesh), mesh.point(target(h, mesh)));
-    if (with_normals) (*attributes.normals)[h] = Kernel::Vector_3(0, 0, 1);
-  }
+  using Attributes = cgal_policies::Corner_attributes<Point>;
+  paint_corner_map(mesh, {true, false, false, false, false}, &Attributes::uvs, uv_of);
+  if (with_normals)
+    paint_corner_map(mesh, {false, true, false, false, false}, &Attributes::normals,
+                     [](Mesh::Face_index, const Point&) { return Kernel::Vector_3(0, 0, 1); });
 }
 
 // Sets every corner's colour from its face and the point of its vertex.
 template <class Color_of>
 void paint_colors(Mesh& mesh, const Color_of& color_of) {
-  const auto attributes =
-      cgal_policies::Corner_attributes<Point>::add(mesh, {false, false, true, false, false});
-  for (auto h : halfedges(mesh))
-    if (!mesh.is_border(h))
-      (*attributes.colors)[h] = color_of(face(h, mesh), mesh.point(target(h, mesh)));
+  paint_corner_map(mesh, {false, false, true, false, false},
+                   &cgal_policies::Corner_attributes<Point>::colors, color_of);
 }
 
 // Sets every corner's second texture coordinate (glTF's TEXCOORD_1) from its face and the point
 // of its vertex.
 template <class Uv_of>
 void paint_second_uvs(Mesh& mesh, const Uv_of& uv_of) {
-  const auto attributes =
-      cgal_policies::Corner_attributes<Point>::add(mesh, {false, false, false, false, true});
-  for (auto h : halfedges(mesh))
-    if (!mesh.is_border(h))
-      (*attributes.second_uvs)[h] = uv_of(face(h, mesh), mesh.point(target(h, mesh)));
+  paint_corner_map(mesh, {false, false, false, false, true},
+                   &cgal_policies::Corner_attributes<Point>::second_uvs, uv_of);
 }
 
 // Twice the signed area of a face's texture triangle.
@@ -198,18 +203,21 @@ inline double uv_area(const Mesh& mesh, Mesh::Face_index f) {
   return cgal_policies::Corner_attributes<Point>(mesh).face_uv_area(mesh, f);
 }
 
-// flat_grid(4) with texture coordinates (x, y) / 4, whose extent is sqrt(2); normals +z when
+// flat_grid(n) with texture coordinates (x, y) / n, whose extent is sqrt(2); normals +z when
 // asked.
-inline Mesh textured_plane(bool with_normals) {
-  Mesh mesh = flat_grid(4);
+inline Mesh textured_grid(int n, bool with_normals) {
+  Mesh mesh = flat_grid(n);
   paint_corners(
       mesh,
-      [](Mesh::Face_index, const Point& p) {
-        return std::array<double, 2>{p.x() / 4, p.y() / 4};
+      [n](Mesh::Face_index, const Point& p) {
+        return std::array<double, 2>{p.x() / n, p.y() / n};
       },
       with_normals);
   return mesh;
 }
+
+// textured_grid(4, with_normals).
+inline Mesh textured_plane(bool with_normals) { return textured_grid(4, with_normals); }
 
 using Profile = CGAL::Surface_mesh_simplification::Edge_profile<
     Mesh, Mesh::Property_map<Mesh::Vertex_index, Point>, Kernel>;
