@@ -65,8 +65,8 @@ class Hausdorff_input_surface {
 
   double diagonal() const { return m_diagonal; }
   double tolerance() const { return m_tolerance; }
-  std::size_t size() const { return m_corners.size(); }
-  const Triangle_corners& corners(std::size_t i) const { return m_corners[i]; }
+  std::size_t size() const { return m_bvh.size(); }
+  const Triangle_corners& corners(std::size_t i) const { return m_bvh.stored(m_position[i]); }
 
   // An upper bound of p's distance (all the tests need): a walk across input edges from `hint`
   // while the distance drops; beyond the tolerance, the exact nearest triangle (the lowest index
@@ -75,13 +75,13 @@ class Hausdorff_input_surface {
                            std::size_t hint = Reference_sample::kNoTriangle) const {
     Triangle_bvh::Hit start;
     if (hint != Reference_sample::kNoTriangle) {
-      std::uint32_t at = std::uint32_t(hint);
-      double d2 = squared_distance_to_triangle(p, m_corners[at]);
+      std::uint32_t at = m_position[hint];  // the walk goes by positions in the hierarchy
+      double d2 = squared_distance_to_triangle(p, m_bvh.stored(at));
       for (std::size_t step = 0; step < kWalkSteps; ++step) {
         const std::uint32_t from = at;
         for (const std::uint32_t j : m_neighbours[from]) {
           if (j == kNoNeighbour) continue;
-          const double e2 = squared_distance_to_triangle(p, m_corners[j]);
+          const double e2 = squared_distance_to_triangle(p, m_bvh.stored(j));
           if (e2 < d2) {
             d2 = e2;
             at = j;
@@ -89,8 +89,8 @@ class Hausdorff_input_surface {
         }
         if (at == from) break;
       }
-      if (d2 <= m_tolerance * m_tolerance) return {std::sqrt(d2), at};
-      start = {at, d2};
+      if (d2 <= m_tolerance * m_tolerance) return {std::sqrt(d2), m_bvh.index(at)};
+      start = {m_bvh.index(at), d2};
     }
     const Triangle_bvh::Hit hit = m_bvh.nearest(p, start);
     if (hit.triangle == Triangle_bvh::kNone) return {};  // no input triangles
@@ -108,11 +108,11 @@ class Hausdorff_input_surface {
       m_flat_stamp = 1;
     }
     m_flat_stack.clear();
-    const auto visit = [&](std::uint32_t j) {
+    const auto visit = [&](std::uint32_t j) {  // j a position in the hierarchy
       auto& [stamp, state] = m_flat_state[j];
       if (stamp != m_flat_stamp) {
         stamp = m_flat_stamp;
-        const Triangle_corners& q = m_corners[j];
+        const Triangle_corners& q = m_bvh.stored(j);
         state = !frame.may_meet(q) ? outside : frame.holds(q) ? kept : rejected;
         if (state == kept) m_flat_stack.push_back(j);
       }
@@ -121,9 +121,10 @@ class Hausdorff_input_surface {
     // Seeds: the triangles nearest to t's corners, or, when one does not hold the argument (a
     // corner on a crease may be nearest to the far side), the two rings of triangles around it.
     for (const Reference_sample& s : t.samples) {
-      if (s.triangle == Reference_sample::kNoTriangle || visit(std::uint32_t(s.triangle)) == kept)
-        continue;
-      for (const std::uint32_t j : m_neighbours[s.triangle])
+      if (s.triangle == Reference_sample::kNoTriangle) continue;
+      const std::uint32_t seed = m_position[s.triangle];
+      if (visit(seed) == kept) continue;
+      for (const std::uint32_t j : m_neighbours[seed])
         if (j != kNoNeighbour && visit(j) != kept)
           for (const std::uint32_t k : m_neighbours[j])
             if (k != kNoNeighbour) visit(k);
@@ -133,7 +134,7 @@ class Hausdorff_input_surface {
       if (expanded == kFlatSearchLimit) return false;
       const std::uint32_t i = m_flat_stack.back();
       m_flat_stack.pop_back();
-      const Triangle_corners& q = m_corners[i];
+      const Triangle_corners& q = m_bvh.stored(i);
       centroid = centroid || frame.holds_centroid(q);
       for (int k = 0; k < 3; ++k) {
         const std::uint32_t j = m_neighbours[i][k];
@@ -145,19 +146,29 @@ class Hausdorff_input_surface {
   }
 
  private:
+  // The hierarchy keeps the only copy of the corners, in the order of its leaves, and the
+  // neighbours follow that order: a walk then reads memory that the search has read or will.
   void index(Input_triangles triangles) {
-    m_corners = std::move(triangles.corners);
-    m_neighbours = std::move(triangles.neighbours);
-    m_flat_state.assign(m_corners.size(), {0, 0});
-    m_bvh = Triangle_bvh(m_corners);
+    m_bvh = Triangle_bvh(triangles.corners);
+    triangles.corners = {};
+    const std::uint32_t n = std::uint32_t(m_bvh.size());
+    m_position.resize(n);
+    for (std::uint32_t k = 0; k < n; ++k) m_position[m_bvh.index(k)] = k;
+    m_neighbours.resize(n);
+    for (std::uint32_t k = 0; k < n; ++k)
+      for (int e = 0; e < 3; ++e) {
+        const std::uint32_t j = triangles.neighbours[m_bvh.index(k)][std::size_t(e)];
+        m_neighbours[k][std::size_t(e)] = j == kNoNeighbour ? kNoNeighbour : m_position[j];
+      }
+    m_flat_state.assign(n, {0, 0});
   }
 
   double m_diagonal = 0;
   double m_tolerance = 0;
-  std::vector<Triangle_corners> m_corners;
-  std::vector<std::array<std::uint32_t, 3>> m_neighbours;
   Triangle_bvh m_bvh;
-  mutable std::vector<std::pair<std::uint32_t, std::uint8_t>> m_flat_state;  // stamp, state
+  std::vector<std::uint32_t> m_position;  // of each triangle in the hierarchy's order
+  std::vector<std::array<std::uint32_t, 3>> m_neighbours;  // by positions, in that order
+  mutable std::vector<std::pair<std::uint32_t, std::uint8_t>> m_flat_state;  // by positions
   mutable std::uint32_t m_flat_stamp = 0;
   mutable std::vector<std::uint32_t> m_flat_stack;
 };

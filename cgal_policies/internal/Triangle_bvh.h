@@ -91,6 +91,13 @@ class Triangle_bvh {
 
   Hit nearest(const Eigen::Vector3d& p) const { return nearest(p, Hit()); }
 
+  // The triangles in the order of the leaves, near ones mostly close together: a caller that walks
+  // the surface keeps them here, in this order, rather than in a copy of its own.
+  std::size_t size() const { return m_triangles.size(); }
+  const Triangle_corners& stored(std::uint32_t k) const { return m_triangles[k]; }
+  // The constructor's index of stored(k).
+  std::uint32_t index(std::uint32_t k) const { return m_index[k]; }
+
  private:
   // A leaf holds 2 to 4 triangles; an inner node's left child follows it, `first` is its right.
   struct Node {
