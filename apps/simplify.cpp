@@ -86,7 +86,7 @@ void print_help() {
          "  --out-of-core         never hold IN whole (binary PLY or OBJ): read it in passes,\n"
          "                        spill each cell's triangles to a temporary file, and\n"
          "                        simplify cell by cell (docs/scale.md); IN's equal points are\n"
-         "                        joined and its attributes dropped. Not with --max-error,\n"
+         "                        joined, its corner attributes carried. Not with --max-error,\n"
          "                        hausdorff, --merge-distance, --min-component, --measure or\n"
          "                        --snapshot\n"
          "  --drop-small-pieces   when no collapse is left short of the target, drop the\n"
@@ -289,10 +289,16 @@ int run(int argc, char** argv) {
   if (request.out_of_core) {
     if (snapshot)
       throw App_error(exit_usage, "--snapshot draws IN whole, which --out-of-core never holds");
-    const Streamed_mesh_file source(input);
+    // Only an OBJ, PLY or glTF output can hold texture coordinates, normals and colours.
+    const Streamed_mesh_file source(input, writes_corner_attributes(output)
+                                               ? Corner_attribute_reading::keep
+                                               : Corner_attribute_reading::drop);
     run = run_with_bar(options, source.declared_faces(), quiet, [&](const Pipeline& pipeline) {
       return run_out_of_core(pipeline, source, input, mesh);
     });
+    const Streamed_mesh_file::Kinds kinds = source.corner_kinds();
+    input_had_corner_values = kinds.uvs || kinds.normals || kinds.colors;
+    read_report.materials = source.materials();
   } else {
     const Stopwatch reading;
     // Only an OBJ, PLY or glTF output can hold texture coordinates, normals and colours.

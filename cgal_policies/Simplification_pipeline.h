@@ -124,10 +124,10 @@ class Simplification_pipeline {
   // internal/Streamed_cut.h) into `mesh`, which it replaces: equal points joined, cut into cells
   // with the triangles spilled to temporary files, each cell's part simplified as in a partitioned
   // run, the parts stitched and finished, then the fit by cells against the spilled input. Peak
-  // memory: the points, the parts in flight and the output. Without corner attributes, and
-  // without the passes that need the whole input (merge, components, a bound, bounded
-  // smoothing): those options are preconditions. The simplification pass's seconds include the
-  // reading.
+  // memory: the points, the parts in flight and the output. The corner values and materials the
+  // source carries are carried as in memory. Without the passes that need the whole input (merge,
+  // components, a bound, bounded smoothing): those options are preconditions. The simplification
+  // pass's seconds include the reading.
   template <class Source>
   Simplification_report run_streamed(const Source& source, Mesh& mesh) const {
     check_streamed_options();
@@ -143,6 +143,7 @@ class Simplification_pipeline {
         part_or_stitched_runner(mesh, input_as_cut, input.diagonal(), progress), mesh);
     if (!outcome) throw std::logic_error("a part lost a vertex of its cut");
     report.stop_reason = outcome->stop_reason;
+    report.attributes_carried = outcome->attributes_carried;
     report.pass_seconds[std::size_t(Simplification_pass::simplification)] = seconds_since(start);
     finish(report, mesh, Mesh(), [&](const Two_sided_fit_options& fit) {
       // One cell is the whole input: fitted whole, as run() fits a mesh it did not cut.
@@ -152,7 +153,7 @@ class Simplification_pipeline {
       std::optional<internal::Spill_files> shifted_spills;
       const auto input_parts = [&](const internal::Spatial_cells& by) {
         const bool first_half = &by == &input.cells();
-        if (!first_half) input.spill_shifted(shifted, shifted_spills.emplace(report.parts));
+        if (!first_half) input.spill_shifted(shifted, shifted_spills);
         return [parts = parts_of(input, first_half ? input.spills() : *shifted_spills)](
                    std::size_t c) { return internal::near_triangles(parts(c)); };
       };
@@ -258,10 +259,10 @@ class Simplification_pipeline {
     if (m_options.fit) {
       const internal::Spatial_cells shifted = input.shifted_cells();
       job.shifted_cells = shifted.splits();
-      internal::Spill_files shifted_spills(shifted.size());
+      std::optional<internal::Spill_files> shifted_spills;
       input.spill_shifted(shifted, shifted_spills);
       internal::for_each_in_parallel(shifted.size(), m_options.threads, [&](std::size_t c) {
-        internal::write_raw_mesh(input.part(shifted_spills, c),
+        internal::write_raw_mesh(input.part(*shifted_spills, c),
                                  internal::near_part_file(folder, 2, c));
       });
     }

@@ -42,16 +42,27 @@ void require_unreadable_input(const cgal_policies::io::Io_error& error, const st
 
 void read_in_passes(const std::string& path) {
   try {
-    const cgal_policies::io::Streamed_mesh_file file(path);
+    using File = cgal_policies::io::Streamed_mesh_file;
+    const File file(path, apps::Corner_attribute_reading::keep);
     std::size_t points = 0;
     file.for_each_point([&](double x, double y, double z) {
       fuzz::require(std::isfinite(x) && std::isfinite(y) && std::isfinite(z),
                     "a streamed point is finite");
       ++points;
     });
-    file.for_each_triangle([&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-      fuzz::require(a < points && b < points && c < points, "a streamed triangle names points");
-    });
+    const std::size_t materials = file.materials().names.size();
+    file.for_each_triangle(
+        [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, const File::Corners& corners) {
+          fuzz::require(a < points && b < points && c < points, "a streamed triangle names points");
+          fuzz::require(
+              corners.material < materials ||
+                  corners.material == cgal_policies::Corner_attributes<apps::Point>::kNoMaterial,
+              "a streamed triangle's material is one of the file's");
+          for (const auto& v : corners.values)
+            fuzz::require(!std::isinf(v.uv[0]) && !std::isinf(v.uv[1]) &&
+                              !std::isinf(v.normal.x()) && !std::isinf(v.color[0]),
+                          "a streamed corner's values are finite or none");
+        });
   } catch (const cgal_policies::io::Io_error& error) {
     require_unreadable_input(error, path);
   }

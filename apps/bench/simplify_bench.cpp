@@ -289,7 +289,8 @@ int run(int argc, char** argv) {
     if (mesh_files.empty()) throw App_error(exit_usage, "give --preset or --mesh (see --help)");
     if (only) throw App_error(exit_usage, "--only picks among a preset's meshes: give --preset");
     if (out_of_core && attributes)
-      throw App_error(exit_usage, "--out-of-core reads no corner attributes: no --attributes");
+      throw App_error(exit_usage,
+                      "the bench's out-of-core rows read no corner attributes: no --attributes");
     const std::vector<Bench_target> targets = ad_hoc_targets(ratios, faces);
     for (const std::string& file : mesh_files)
       plan.meshes.push_back({file, targets, {}, out_of_core});

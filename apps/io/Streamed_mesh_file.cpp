@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <string_view>
 #include <vector>
@@ -129,6 +130,15 @@ int index_list_slot(const Ply_element& element) {
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
+bool parse_number(std::string_view token, double& value) {
+  const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+  return error == std::errc() && end == token.data() + token.size() && !token.empty();
+}
+
+constexpr std::size_t kNoEntry = Corner_tables::kNoEntry;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr std::array<double, 4> kNoColor{kNaN, kNaN, kNaN, kNaN};
+
 // The next token of `line` from `at` on, blanks skipped.
 std::string_view next_token(std::string_view line, std::size_t& at) {
   while (at < line.size() && is_blank(line[at])) ++at;
@@ -139,7 +149,8 @@ std::string_view next_token(std::string_view line, std::size_t& at) {
 
 }  // namespace
 
-Streamed_mesh_file::Streamed_mesh_file(std::string path) : m_path(std::move(path)) {
+Streamed_mesh_file::Streamed_mesh_file(std::string path, Corner_attribute_reading attributes)
+    : m_path(std::move(path)), m_keep(attributes == Corner_attribute_reading::keep) {
   std::ifstream file(m_path, std::ios::binary);
   if (!file) fail(m_path, "cannot open");
   std::string start(4, '\0');
@@ -180,59 +191,166 @@ std::size_t Streamed_mesh_file::declared_faces() const {
 void Streamed_mesh_file::for_each_point(
     const std::function<void(double, double, double)>& f) const {
   m_points = 0;
+  m_kinds = {};
+  m_uvs.clear();
+  m_normals.clear();
+  m_colors.clear();
+  m_material_libraries.clear();
+  m_material_names.clear();
   const auto counted = [&](double x, double y, double z) {
     if (!(std::isfinite(x) && std::isfinite(y) && std::isfinite(z)))
       fail(m_path, "vertex " + std::to_string(m_points) + ": a coordinate is not finite");
     ++m_points;
     f(x, y, z);
   };
-  if (m_obj) {
-    for_each_obj_line([&](std::size_t number, std::string_view line) {
-      std::size_t at = 0;
-      if (next_token(line, at) != "v") return;
-      double xyz[3];
-      for (double& c : xyz) {
-        const std::string_view token = next_token(line, at);
-        const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), c);
-        if (error != std::errc() || end != token.data() + token.size() || token.empty())
-          fail(m_path, "line " + std::to_string(number) + ": a vertex needs three numbers");
-      }
-      counted(xyz[0], xyz[1], xyz[2]);
-    });
-    return;
-  }
-  for_each_ply_point(counted);
+  if (m_obj)
+    for_each_obj_point(counted);
+  else
+    for_each_ply_point(counted);
+  if (m_colors.size() > 0) m_colors.resize(m_points, kNoColor);
+  m_kinds.uvs = !m_uvs.empty();
+  m_kinds.normals = !m_normals.empty();
+  m_kinds.colors = !m_colors.empty();
+  m_kinds.materials = !m_material_names.empty();
 }
 
-void Streamed_mesh_file::for_each_triangle(
-    const std::function<void(std::uint32_t, std::uint32_t, std::uint32_t)>& f) const {
-  if (!m_obj) {
-    for_each_ply_triangle(f);
-    return;
-  }
-  std::size_t so_far = 0;  // the vertices before the line, which negative indices count back from
-  std::vector<std::uint32_t> polygon;
+Streamed_mesh_file::Kinds Streamed_mesh_file::corner_kinds() const { return m_kinds; }
+
+Material_references Streamed_mesh_file::materials() const {
+  Material_references materials;
+  const std::filesystem::path folder = std::filesystem::absolute(m_path).parent_path();
+  for (const std::string& library : m_material_libraries)
+    materials.libraries.push_back((folder / library).lexically_normal().string());
+  materials.names = m_material_names;
+  return materials;
+}
+
+void Streamed_mesh_file::for_each_obj_point(
+    const std::function<void(double, double, double)>& f) const {
   for_each_obj_line([&](std::size_t number, std::string_view line) {
     std::size_t at = 0;
     const std::string_view keyword = next_token(line, at);
-    if (keyword == "v") ++so_far;
+    const auto numbers = [&](double* values, std::size_t most) {
+      std::size_t n = 0;
+      for (std::string_view token = next_token(line, at); !token.empty() && n < most;
+           token = next_token(line, at))
+        if (!parse_number(token, values[n++]) || !std::isfinite(values[n - 1]))
+          fail(m_path, "line " + std::to_string(number) + ": '" + std::string(token.substr(0, 20)) +
+                           "' is not a finite number");
+      return n;
+    };
+    if (keyword == "v") {
+      // x y z, then a weight w (skipped) or a colour r g b [a], as the reader of whole files.
+      double values[7] = {0, 0, 0, 0, 0, 0, 1};
+      const std::size_t n = numbers(values, 7);
+      if (n < 3) fail(m_path, "line " + std::to_string(number) + ": a vertex needs three numbers");
+      if (m_keep && n >= 6) {
+        m_colors.resize(m_points, kNoColor);
+        m_colors.push_back({values[3], values[4], values[5], values[6]});
+      }
+      f(values[0], values[1], values[2]);
+    } else if (!m_keep) {
+      return;
+    } else if (keyword == "vt") {
+      double uv[3] = {0, 0, 0};
+      if (numbers(uv, 3) < 1)
+        fail(m_path, "line " + std::to_string(number) + ": a texture coordinate needs u [v]");
+      m_uvs.push_back({uv[0], uv[1]});
+    } else if (keyword == "vn") {
+      double normal[3];
+      if (numbers(normal, 3) < 3)
+        fail(m_path, "line " + std::to_string(number) + ": a normal needs three numbers, x y z");
+      m_normals.push_back({normal[0], normal[1], normal[2]});
+    } else if (keyword == "mtllib") {
+      for (std::string_view name = next_token(line, at); !name.empty(); name = next_token(line, at))
+        m_material_libraries.emplace_back(name);
+    } else if (keyword == "usemtl") {
+      const std::string_view name = next_token(line, at);
+      if (name.empty())
+        fail(m_path, "line " + std::to_string(number) + ": usemtl needs a material name");
+      if (std::find(m_material_names.begin(), m_material_names.end(), name) ==
+          m_material_names.end())
+        m_material_names.emplace_back(name);
+    }
+  });
+}
+
+Corner_attributes<Point>::Values Streamed_mesh_file::corner_values(std::uint32_t v, std::size_t uv,
+                                                                   std::size_t normal) const {
+  Corner_attributes<Point>::Values values = Corner_attributes<Point>::no_values();
+  if (m_kinds.uvs && uv != kNoEntry) values.uv = m_uvs[uv];
+  if (m_kinds.normals && normal != kNoEntry)
+    values.normal =
+        Kernel::Vector_3(m_normals[normal][0], m_normals[normal][1], m_normals[normal][2]);
+  if (m_kinds.colors) values.color = m_colors[v];
+  return values;
+}
+
+void Streamed_mesh_file::for_each_triangle(const Triangle_function& f) const {
+  if (m_obj)
+    for_each_obj_triangle(f);
+  else
+    for_each_ply_triangle(f);
+}
+
+void Streamed_mesh_file::for_each_obj_triangle(const Triangle_function& f) const {
+  // The entries before the line, which negative indices count back from.
+  std::size_t points = 0, uvs = 0, normals = 0;
+  std::uint32_t material = Corner_attributes<Point>::kNoMaterial;
+  std::vector<std::array<std::size_t, 3>> polygon;  // point, uv and normal of each corner
+  for_each_obj_line([&](std::size_t number, std::string_view line) {
+    std::size_t at = 0;
+    const std::string_view keyword = next_token(line, at);
+    if (keyword == "v") ++points;
+    if (keyword == "vt") ++uvs;
+    if (keyword == "vn") ++normals;
+    if (keyword == "usemtl" && m_kinds.materials) {
+      const std::string_view name = next_token(line, at);
+      material = std::uint32_t(std::find(m_material_names.begin(), m_material_names.end(), name) -
+                               m_material_names.begin());
+    }
     if (keyword != "f") return;
     polygon.clear();
     for (std::string_view token = next_token(line, at); !token.empty();
          token = next_token(line, at)) {
-      long long index = 0;
-      const char* end = token.data() + token.size();
-      const auto [stop, error] = std::from_chars(token.data(), end, index);
-      const long long first = index < 0 ? (long long)(so_far) + index : index - 1;
-      if (error != std::errc() || (stop != end && *stop != '/') || index == 0 || first < 0 ||
-          first >= (long long)(m_points))
+      const auto bad = [&](const char* why) {
         fail(m_path, "line " + std::to_string(number) + ": '" + std::string(token.substr(0, 20)) +
-                         "' names no vertex");
-      polygon.push_back(std::uint32_t(first));
+                         "' " + why);
+      };
+      std::array<std::size_t, 3> corner = {kNoEntry, kNoEntry, kNoEntry};
+      // Negative indices count back from the entries before the line; a point may come later.
+      const std::array<std::size_t, 3> read = {points, uvs, normals},
+                                       bound = {m_points, uvs, normals};
+      std::string_view rest = token;
+      for (std::size_t field = 0; field < 3 && (field == 0 || !rest.empty()); ++field) {
+        const std::size_t slash = rest.find('/');
+        const std::string_view index = rest.substr(0, slash);
+        rest = slash == std::string_view::npos ? std::string_view() : rest.substr(slash + 1);
+        if (field > 0 && index.empty()) continue;  // v//vn, or v/vt/
+        long long k = 0;
+        const auto [stop, error] = std::from_chars(index.data(), index.data() + index.size(), k);
+        const long long first = k < 0 ? (long long)(read[field]) + k : k - 1;
+        if (error != std::errc() || stop != index.data() + index.size() || k == 0 || first < 0 ||
+            first >= (long long)(bound[field]))
+          bad(field == 0   ? "names no vertex"
+              : field == 1 ? "names a texture coordinate (vt) that is not read before it"
+                           : "names a normal (vn) that is not read before it");
+        corner[field] = std::size_t(first);
+      }
+      polygon.push_back(corner);
     }
     if (polygon.size() < 3)
       fail(m_path, "line " + std::to_string(number) + ": a face needs at least three corners");
-    for (std::size_t k = 2; k < polygon.size(); ++k) f(polygon[0], polygon[k - 1], polygon[k]);
+    Corners corners;
+    corners.material = material;
+    for (std::size_t k = 2; k < polygon.size(); ++k) {
+      const std::array<std::size_t, 3>* fan[3] = {&polygon[0], &polygon[k - 1], &polygon[k]};
+      for (int c = 0; c < 3; ++c)
+        corners.values[std::size_t(c)] =
+            corner_values(std::uint32_t((*fan[c])[0]), (*fan[c])[1], (*fan[c])[2]);
+      f(std::uint32_t(polygon[0][0]), std::uint32_t(polygon[k - 1][0]),
+        std::uint32_t(polygon[k][0]), corners);
+    }
   });
 }
 
@@ -244,30 +362,34 @@ void Streamed_mesh_file::for_each_ply_point(
       values.skip(m_path, element);
       continue;
     }
-    const int slot[3] = {scalar_slot(element, "x"), scalar_slot(element, "y"),
-                         scalar_slot(element, "z")};
+    Ply_vertex_slots slots = ply_vertex_slots(element);
+    if (!m_keep) slots.normal[0] = slots.uv[0] = slots.color[0] = -1;
     for (std::size_t row = 0; row < element.count; ++row) {
-      double xyz[3] = {0, 0, 0};
+      Ply_vertex_row vertex;
       for (std::size_t p = 0; p < element.properties.size(); ++p) {
         const Ply_property& property = element.properties[p];
-        if (property.count_type) {
+        if (property.count_type)
           values.skip(m_path, property);
-          continue;
-        }
-        const double value = values.next(*property.type);
-        for (int axis = 0; axis < 3; ++axis)
-          if (slot[axis] == int(p)) xyz[axis] = value;
+        else
+          slots.place(int(p), values.next(*property.type), *property.type, vertex);
       }
-      f(xyz[0], xyz[1], xyz[2]);
+      const std::string non_finite = slots.non_finite(vertex);
+      if (!non_finite.empty()) fail(m_path, "vertex " + std::to_string(row) + ": " + non_finite);
+      if (slots.normal[0] >= 0)
+        m_normals.push_back({vertex.normal[0], vertex.normal[1], vertex.normal[2]});
+      if (slots.uv[0] >= 0) m_uvs.push_back({vertex.uv[0], vertex.uv[1]});
+      if (slots.color[0] >= 0) m_colors.push_back(vertex.color);
+      f(vertex.xyz[0], vertex.xyz[1], vertex.xyz[2]);
     }
     return;
   }
 }
 
-void Streamed_mesh_file::for_each_ply_triangle(
-    const std::function<void(std::uint32_t, std::uint32_t, std::uint32_t)>& f) const {
+void Streamed_mesh_file::for_each_ply_triangle(const Triangle_function& f) const {
   Ply_reader values(m_path, m_header);
   std::vector<std::uint32_t> polygon;
+  Corners corners;
+  corners.values.fill(Corner_attributes<Point>::no_values());
   for (const Ply_element& element : m_header.elements) {
     if (element.name != "face") {
       values.skip(m_path, element);
@@ -291,7 +413,13 @@ void Streamed_mesh_file::for_each_ply_triangle(
         }
         if (polygon.size() < 3)
           fail(m_path, "face " + std::to_string(row) + ": a face needs at least three corners");
-        for (std::size_t k = 2; k < polygon.size(); ++k) f(polygon[0], polygon[k - 1], polygon[k]);
+        for (std::size_t k = 2; k < polygon.size(); ++k) {
+          const std::uint32_t fan[3] = {polygon[0], polygon[k - 1], polygon[k]};
+          if (m_kinds.uvs || m_kinds.normals || m_kinds.colors)  // per vertex
+            for (int c = 0; c < 3; ++c)
+              corners.values[std::size_t(c)] = corner_values(fan[c], fan[c], fan[c]);
+          f(fan[0], fan[1], fan[2], corners);
+        }
       }
     return;
   }

@@ -363,6 +363,58 @@ const Ply_type* ply_type(std::string_view name) {
 
 }  // namespace
 
+Ply_vertex_slots ply_vertex_slots(const Ply_element& vertex) {
+  const auto slot = [&](std::string_view name) {
+    for (std::size_t p = 0; p < vertex.properties.size(); ++p)
+      if (vertex.properties[p].name == name && !vertex.properties[p].count_type) return int(p);
+    return -1;
+  };
+  Ply_vertex_slots slots;
+  for (int axis = 0; axis < 3; ++axis) {
+    slots.xyz[axis] = slot(std::string(1, char('x' + axis)));
+    slots.normal[axis] = slot("n" + std::string(1, char('x' + axis)));
+  }
+  if (std::count(slots.normal, slots.normal + 3, -1) > 0) slots.normal[0] = -1;
+  // The names texture coordinates go by in the PLY files of common tools.
+  for (const auto& [u, v] : {std::pair<const char*, const char*>{"s", "t"},
+                             {"u", "v"},
+                             {"texture_u", "texture_v"},
+                             {"texture_s", "texture_t"}})
+    if (slots.uv[0] < 0 && slot(u) >= 0 && slot(v) >= 0) {
+      slots.uv[0] = slot(u);
+      slots.uv[1] = slot(v);
+    }
+  // Colours: red, green and blue (alpha if there), with or without MeshLab's "diffuse_".
+  for (const std::string prefix : {"", "diffuse_"}) {
+    if (slots.color[0] >= 0) break;
+    for (int k = 0; k < 4; ++k)
+      slots.color[k] = slot(prefix + std::array{"red", "green", "blue", "alpha"}[k]);
+    if (std::count(slots.color, slots.color + 3, -1) > 0) slots.color[0] = -1;
+  }
+  return slots;
+}
+
+void Ply_vertex_slots::place(int p, double value, const Ply_type& type, Ply_vertex_row& row) const {
+  for (int axis = 0; axis < 3; ++axis) {
+    if (xyz[axis] == p) row.xyz[axis] = value;
+    if (normal[axis] == p) row.normal[axis] = value;
+  }
+  for (int k = 0; k < 2; ++k)
+    if (uv[k] == p) row.uv[k] = value;
+  for (int k = 0; k < 4; ++k)
+    if (color[k] == p) row.color[std::size_t(k)] = value / type.full_intensity;
+}
+
+std::string Ply_vertex_slots::non_finite(const Ply_vertex_row& row) const {
+  const auto finite = [](const double* values, std::size_t n) {
+    return std::all_of(values, values + n, [](double x) { return std::isfinite(x); });
+  };
+  if (normal[0] >= 0 && !finite(row.normal, 3)) return "its normal is not finite";
+  if (uv[0] >= 0 && !finite(row.uv, 2)) return "its texture coordinate is not finite";
+  if (color[0] >= 0 && !finite(row.color.data(), 4)) return "its colour is not finite";
+  return "";
+}
+
 Ply_header parse_ply_header(const std::string& source, std::string_view bytes,
                             std::size_t file_size) {
   if (bytes.substr(0, 4) != "ply\n" && bytes.substr(0, 5) != "ply\r\n")
@@ -491,38 +543,10 @@ Polygon_soup parse_ply(const std::string& source, std::string_view bytes) {
   for (const Ply_element& element : header.elements) {
     const bool is_vertex = element.name == "vertex", is_face = element.name == "face",
                is_strip = element.name == "tristrips";
-    int xyz_slot[3] = {-1, -1, -1}, normal_slot[3] = {-1, -1, -1}, uv_slot[2] = {-1, -1},
-        color_slot[4] = {-1, -1, -1, -1};
+    const Ply_vertex_slots slots = is_vertex ? ply_vertex_slots(element) : Ply_vertex_slots();
     if (is_vertex) {
-      const auto slot = [&](std::string_view name) {
-        for (std::size_t p = 0; p < element.properties.size(); ++p)
-          if (element.properties[p].name == name && !element.properties[p].count_type)
-            return int(p);
-        return -1;
-      };
-      for (int axis = 0; axis < 3; ++axis) {
-        xyz_slot[axis] = slot(std::string(1, char('x' + axis)));
-        normal_slot[axis] = slot("n" + std::string(1, char('x' + axis)));
-      }
-      if (std::count(xyz_slot, xyz_slot + 3, -1) > 0)
+      if (std::count(slots.xyz, slots.xyz + 3, -1) > 0)
         fail(source, "the vertex element has no x, y and z");
-      // The names texture coordinates go by in the PLY files of common tools.
-      for (const auto& [u, v] : {std::pair<const char*, const char*>{"s", "t"},
-                                 {"u", "v"},
-                                 {"texture_u", "texture_v"},
-                                 {"texture_s", "texture_t"}})
-        if (uv_slot[0] < 0 && slot(u) >= 0 && slot(v) >= 0) {
-          uv_slot[0] = slot(u);
-          uv_slot[1] = slot(v);
-        }
-      // Colours: red, green and blue (alpha if there), with or without MeshLab's "diffuse_".
-      for (const std::string prefix : {"", "diffuse_"}) {
-        if (color_slot[0] >= 0) break;
-        for (int k = 0; k < 4; ++k)
-          color_slot[k] = slot(prefix + std::array{"red", "green", "blue", "alpha"}[k]);
-        if (std::count(color_slot, color_slot + 3, -1) > 0) color_slot[0] = -1;
-      }
-      if (std::count(normal_slot, normal_slot + 3, -1) > 0) normal_slot[0] = -1;
       has_points = true;
       soup.points.reserve(element.count);
     }
@@ -530,20 +554,11 @@ Polygon_soup parse_ply(const std::string& source, std::string_view bytes) {
                 ((is_face || is_strip) &&
                  std::any_of(element.properties.begin(), element.properties.end(), is_index_list));
     for (std::size_t row = 0; row < element.count; ++row) {
-      double xyz[3] = {0, 0, 0}, normal[3] = {0, 0, 0}, uv[2] = {0, 0};
-      std::array<double, 4> color{0, 0, 0, 1};  // opaque unless the file says otherwise
+      Ply_vertex_row vertex;
       for (std::size_t p = 0; p < element.properties.size(); ++p) {
         const Ply_property& property = element.properties[p];
         if (!property.count_type) {
-          const double value = values.next(*property.type);
-          for (int axis = 0; axis < 3; ++axis) {
-            if (xyz_slot[axis] == int(p)) xyz[axis] = value;
-            if (normal_slot[axis] == int(p)) normal[axis] = value;
-          }
-          for (int k = 0; k < 2; ++k)
-            if (uv_slot[k] == int(p)) uv[k] = value;
-          for (int k = 0; k < 4; ++k)
-            if (color_slot[k] == int(p)) color[k] = value / property.type->full_intensity;
+          slots.place(int(p), values.next(*property.type), *property.type, vertex);
           continue;
         }
         const double count = values.next(*property.count_type);
@@ -564,22 +579,13 @@ Polygon_soup parse_ply(const std::string& source, std::string_view bytes) {
           soup.polygons.emplace_back(list.begin(), list.end());
       }
       if (!is_vertex) continue;
-      soup.points.emplace_back(xyz[0], xyz[1], xyz[2]);
-      if (normal_slot[0] >= 0) {
-        if (!(std::isfinite(normal[0]) && std::isfinite(normal[1]) && std::isfinite(normal[2])))
-          fail(source, "vertex " + std::to_string(row) + ": its normal is not finite");
-        soup.corners.normals.emplace_back(normal[0], normal[1], normal[2]);
-      }
-      if (uv_slot[0] >= 0) {
-        if (!(std::isfinite(uv[0]) && std::isfinite(uv[1])))
-          fail(source, "vertex " + std::to_string(row) + ": its texture coordinate is not finite");
-        soup.corners.uvs.push_back({uv[0], uv[1]});
-      }
-      if (color_slot[0] >= 0) {
-        if (!std::all_of(color.begin(), color.end(), [](double c) { return std::isfinite(c); }))
-          fail(source, "vertex " + std::to_string(row) + ": its colour is not finite");
-        soup.corners.colors.push_back(color);
-      }
+      soup.points.emplace_back(vertex.xyz[0], vertex.xyz[1], vertex.xyz[2]);
+      const std::string non_finite = slots.non_finite(vertex);
+      if (!non_finite.empty()) fail(source, "vertex " + std::to_string(row) + ": " + non_finite);
+      if (slots.normal[0] >= 0)
+        soup.corners.normals.emplace_back(vertex.normal[0], vertex.normal[1], vertex.normal[2]);
+      if (slots.uv[0] >= 0) soup.corners.uvs.push_back({vertex.uv[0], vertex.uv[1]});
+      if (slots.color[0] >= 0) soup.corners.colors.push_back(vertex.color);
     }
   }
   if (!has_points) fail(source, "no vertex element");

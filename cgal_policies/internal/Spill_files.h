@@ -1,6 +1,7 @@
 // The triangles of each cell of a streamed run (docs/scale.md), spilled to temporary files while
 // the input streams past, and read back one cell at a time: a folder of its own under the system's
-// temporary folder, one file of 12-byte triangles (three vertex numbers) per cell, removed with
+// temporary folder, one file per cell of 12-byte triangles (three vertex numbers), each followed by
+// a fixed number of doubles of its own (its corners' values, when the input has them), removed with
 // everything in it when the object goes, an exception or an interruption included.
 #ifndef CGAL_POLICIES_INTERNAL_SPILL_FILES_H
 #define CGAL_POLICIES_INTERNAL_SPILL_FILES_H
@@ -23,7 +24,14 @@ class Spill_files {
  public:
   using Triangle = std::array<std::uint32_t, 3>;
 
-  explicit Spill_files(std::size_t cells) : m_counts(cells, 0) {
+  // The triangles of one cell and their doubles, `doubles()` per triangle, in order.
+  struct Cell {
+    std::vector<Triangle> triangles;
+    std::vector<double> values;
+  };
+
+  explicit Spill_files(std::size_t cells, std::size_t doubles = 0)
+      : m_doubles(doubles), m_counts(cells, 0) {
     namespace fs = std::filesystem;
     std::random_device random;
     for (int attempt = 0; m_folder.empty(); ++attempt) {
@@ -48,8 +56,11 @@ class Spill_files {
 
   ~Spill_files() { remove(); }
 
-  void append(std::size_t cell, const Triangle& t) {
-    if (std::fwrite(t.data(), sizeof t, 1, m_files[cell]) != 1) fail("cannot write", cell);
+  // Appends t and its doubles() values.
+  void append(std::size_t cell, const Triangle& t, const double* values = nullptr) {
+    if (std::fwrite(t.data(), sizeof t, 1, m_files[cell]) != 1 ||
+        std::fwrite(values, sizeof(double), m_doubles, m_files[cell]) != m_doubles)
+      fail("cannot write", cell);
     ++m_counts[cell];
   }
 
@@ -64,16 +75,25 @@ class Spill_files {
   }
 
   std::size_t size() const { return m_counts.size(); }
+  std::size_t doubles() const { return m_doubles; }
 
-  // The triangles of `cell`, in the order they were appended; after close().
-  std::vector<Triangle> read(std::size_t cell) const {
-    std::vector<Triangle> triangles(m_counts[cell]);
+  // The triangles of `cell` and their values, in the order they were appended; after close().
+  Cell read(std::size_t cell) const {
+    Cell read{std::vector<Triangle>(m_counts[cell]),
+              std::vector<double>(m_counts[cell] * m_doubles)};
     std::FILE* file = std::fopen(path(cell).c_str(), "rb");
-    const bool read = file && std::fread(triangles.data(), sizeof(Triangle), triangles.size(),
-                                         file) == triangles.size();
+    const std::size_t n = read.triangles.size();
+    bool complete = file != nullptr;
+    if (complete && m_doubles == 0)  // most inputs: the triangles alone, in one read
+      complete = std::fread(read.triangles.data(), sizeof(Triangle), n, file) == n;
+    else
+      for (std::size_t i = 0; complete && i < n; ++i)
+        complete = std::fread(read.triangles[i].data(), sizeof(Triangle), 1, file) == 1 &&
+                   std::fread(read.values.data() + i * m_doubles, sizeof(double), m_doubles,
+                              file) == m_doubles;
     if (file) std::fclose(file);
-    if (!read) fail("cannot read", cell);
-    return triangles;
+    if (!complete) fail("cannot read", cell);
+    return read;
   }
 
  private:
@@ -93,6 +113,7 @@ class Spill_files {
     std::filesystem::remove_all(m_folder, ignored);
   }
 
+  std::size_t m_doubles;
   std::filesystem::path m_folder;
   std::vector<std::FILE*> m_files;
   std::vector<std::size_t> m_counts;

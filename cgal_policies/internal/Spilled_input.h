@@ -17,6 +17,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace cgal_policies {
@@ -30,7 +31,7 @@ class Spilled_input {
   Spilled_input(const Source& source, const Simplification_options& options)
       : m_input(read_streamed_input<Point>(source)),
         m_cells(m_input.sample, options.cell_count(m_input.faces)),
-        m_spills(m_cells.size()),
+        m_spills(m_cells.size(), streamed_corner_doubles<Point>(m_input.kinds)),
         m_vertex_cell(cut_into_spills(source, m_input, m_cells, m_spills)) {}
 
   std::size_t faces() const { return m_input.faces; }
@@ -40,16 +41,20 @@ class Spilled_input {
     return diagonal_length(CGAL::bbox_3(m_input.points.begin(), m_input.points.end()));
   }
 
+  // The kinds of values the source's corners carry, which every part has.
+  const typename Corner_attributes<Point>::Kinds& corner_kinds() const { return m_input.kinds; }
+
   // The part of cell c (streamed_part()), of the cells spilled here or by spill_shifted().
   CGAL::Surface_mesh<Point> part(const Spill_files& spills, std::size_t c) const {
-    return streamed_part(m_input.points, m_vertex_cell, spills.read(c));
+    return streamed_part(m_input.points, m_vertex_cell, spills.read(c), m_input.kinds);
   }
   const Spill_files& spills() const { return m_spills; }
 
-  // The cells of the fit's second half, and the triangles spilled again into them.
+  // The cells of the fit's second half, and the triangles spilled again into them, into files
+  // that `to` makes.
   Spatial_cells shifted_cells() const { return internal::shifted_cells(m_input.sample, m_cells); }
-  void spill_shifted(const Spatial_cells& shifted, Spill_files& to) const {
-    spill_again(m_input, m_spills, shifted, to);
+  void spill_shifted(const Spatial_cells& shifted, std::optional<Spill_files>& to) const {
+    spill_again(m_input, m_spills, shifted, to.emplace(shifted.size(), m_spills.doubles()));
   }
 
  private:

@@ -4,13 +4,18 @@
 //   void for_each_point(F f) const     calling f(x, y, z) for each vertex, in order
 //   void for_each_triangle(F f) const  calling f(a, b, c), the numbers of three vertices,
 //                                      for each triangle, the same ones on every pass
+// and, when its corners carry values (Streamed_corners.h),
+//   Kinds corner_kinds() const         Corner_attributes<Point>::Kinds, after for_each_point
+// with for_each_triangle calling f(a, b, c, corners), corners a Streamed_corners<Point>
 // (apps/io/Streamed_mesh_file.h reads binary PLY and OBJ files so). Memory: the points, a cell
-// per point, and one cell's part at a time per thread; the triangles wait on disk (Spill_files).
+// per point, and one cell's part at a time per thread; the triangles and their corners' values
+// wait on disk (Spill_files).
 #ifndef CGAL_POLICIES_INTERNAL_STREAMED_CUT_H
 #define CGAL_POLICIES_INTERNAL_STREAMED_CUT_H
 
 #include <cgal_policies/internal/Spatial_cells.h>
 #include <cgal_policies/internal/Spill_files.h>
+#include <cgal_policies/internal/Streamed_corners.h>
 #include <cgal_policies/internal/clean_triangle_mesh.h>
 #include <cgal_policies/internal/mesh_geometry.h>
 #include <cgal_policies/internal/part_vertex_maps.h>
@@ -37,13 +42,15 @@ constexpr std::size_t kCellSample = std::size_t(1) << 20;
 
 // What the first passes over a source keep: its points, those exactly equal joined into one (so
 // that no edge has zero length and a cut never runs between two copies of a point); the number of
-// the joined point of each source point; a sample of the face centroids; the triangles' count.
+// the joined point of each source point; a sample of the face centroids; the triangles' count;
+// the kinds of values their corners carry.
 template <class Point>
 struct Streamed_input {
   std::vector<Point> points;
   std::vector<std::uint32_t> joined;
   std::vector<Eigen::Vector3d> sample;
   std::size_t faces = 0;
+  typename Corner_attributes<Point>::Kinds kinds;
 
   // The source triangle (a, b, c) in joined numbers; false when two of them are one point.
   bool triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c, Spill_files::Triangle& t) const {
@@ -99,9 +106,10 @@ Streamed_input<Point> read_streamed_input(const Source& source) {
   table = {};
   points.resize(kept);
   points.shrink_to_fit();
+  input.kinds = corner_kinds_of<Point>(source);
 
   std::size_t stride = 1;
-  source.for_each_triangle([&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+  source.for_each_triangle([&](std::uint32_t a, std::uint32_t b, std::uint32_t c, const auto&...) {
     Spill_files::Triangle t;
     if (!input.triangle(a, b, c, t)) return;
     if (input.faces++ % stride != 0) return;
@@ -117,20 +125,24 @@ Streamed_input<Point> read_streamed_input(const Source& source) {
 // The cell of a point no triangle uses, and of a point whose triangles lie in several cells.
 constexpr std::uint32_t kNoCell = UINT32_MAX, kCutCell = UINT32_MAX - 1;
 
-// A third pass: each triangle into the spill file of its centroid's cell. Returns each point's
+// A third pass: each triangle, with its corners' values, into the spill file of its centroid's
+// cell (`spills` holding streamed_corner_doubles(input.kinds) a triangle). Returns each point's
 // cell: the one of all its triangles, or kCutCell.
 template <class Point, class Source>
 std::vector<std::uint32_t> cut_into_spills(const Source& source, const Streamed_input<Point>& input,
                                            const Spatial_cells& cells, Spill_files& spills) {
   std::vector<std::uint32_t> vertex_cell(input.points.size(), kNoCell);
-  source.for_each_triangle([&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    Spill_files::Triangle t;
-    if (!input.triangle(a, b, c, t)) return;
-    const std::uint32_t cell = std::uint32_t(cells.cell_of(input.centroid(t)));
-    spills.append(cell, t);
-    for (const std::uint32_t v : t)
-      vertex_cell[v] = vertex_cell[v] == kNoCell || vertex_cell[v] == cell ? cell : kCutCell;
-  });
+  std::vector<double> values(spills.doubles());
+  source.for_each_triangle(
+      [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, const auto&... corners) {
+        Spill_files::Triangle t;
+        if (!input.triangle(a, b, c, t)) return;
+        const std::uint32_t cell = std::uint32_t(cells.cell_of(input.centroid(t)));
+        (encode_streamed_corners<Point>(input.kinds, corners, values.data()), ...);
+        spills.append(cell, t, values.data());
+        for (const std::uint32_t v : t)
+          vertex_cell[v] = vertex_cell[v] == kNoCell || vertex_cell[v] == cell ? cell : kCutCell;
+      });
   spills.close();
   return vertex_cell;
 }
@@ -139,9 +151,12 @@ std::vector<std::uint32_t> cut_into_spills(const Source& source, const Streamed_
 template <class Point>
 void spill_again(const Streamed_input<Point>& input, const Spill_files& from,
                  const Spatial_cells& cells, Spill_files& to) {
-  for (std::size_t c = 0; c < from.size(); ++c)
-    for (const Spill_files::Triangle& t : from.read(c))
-      to.append(cells.cell_of(input.centroid(t)), t);
+  for (std::size_t c = 0; c < from.size(); ++c) {
+    const Spill_files::Cell cell = from.read(c);
+    for (std::size_t i = 0; i < cell.triangles.size(); ++i)
+      to.append(cells.cell_of(input.centroid(cell.triangles[i])), cell.triangles[i],
+                cell.values.data() + i * from.doubles());
+  }
   to.close();
 }
 
@@ -154,15 +169,45 @@ struct Duplicated_point_origins : CGAL::Polygon_mesh_processing::Default_orienta
   }
 };
 
-// The part of the spilled `triangles` of one cell, as Mesh_parts.h makes a part: each vertex's
+// Sets the corner values and materials of `part`, whose face i is the spilled triangle i of
+// `cell` (turned over, maybe, by orient_polygon_soup) and whose vertex v stands for the joined
+// point origin[v]: a triangle's three points differ, so each corner is found by its origin.
+template <class Point>
+void add_streamed_corner_values(CGAL::Surface_mesh<Point>& part,
+                                const std::vector<std::uint32_t>& origin,
+                                const Spill_files::Cell& cell,
+                                const typename Corner_attributes<Point>::Kinds& kinds) {
+  using Attributes = Corner_attributes<Point>;
+  if (streamed_corner_doubles<Point>(kinds) == 0) return;
+  const Attributes attributes = Attributes::add(part, kinds);
+  const std::size_t doubles = streamed_corner_doubles<Point>(kinds);
+  std::size_t i = 0;
+  for (const auto f : part.faces()) {
+    const Spill_files::Triangle& t = cell.triangles[i];
+    const Streamed_corners<Point> corners =
+        decode_streamed_corners<Point>(kinds, cell.values.data() + i * doubles);
+    if (attributes.materials) (*attributes.materials)[f] = corners.material;
+    for (const auto h : CGAL::halfedges_around_face(part.halfedge(f), part)) {
+      const std::uint32_t o = origin[std::size_t(part.target(h))];
+      attributes.set_values(
+          h, corners.values[std::size_t(std::find(t.begin(), t.end(), o) - t.begin())]);
+    }
+    ++i;
+  }
+}
+
+// The part of the spilled triangles of one cell, as Mesh_parts.h makes a part: each vertex's
 // origin (kOriginVertexMap, the joined point it stands for) and whether it is on a cut
-// (kLockedVertexMap). A point whose triangles in the cell make several fans, or meet along an edge
-// of more than two of them, becomes one vertex per fan (orient_polygon_soup), all of one origin.
+// (kLockedVertexMap), and, when `kinds` names any, its corners' values and its faces' materials.
+// A point whose triangles in the cell make several fans, or meet along an edge of more than two of
+// them, becomes one vertex per fan (orient_polygon_soup), all of one origin.
 template <class Point>
 CGAL::Surface_mesh<Point> streamed_part(const std::vector<Point>& points,
                                         const std::vector<std::uint32_t>& vertex_cell,
-                                        const std::vector<Spill_files::Triangle>& triangles) {
+                                        const Spill_files::Cell& cell,
+                                        const typename Corner_attributes<Point>::Kinds& kinds) {
   using Mesh = CGAL::Surface_mesh<Point>;
+  const std::vector<Spill_files::Triangle>& triangles = cell.triangles;
   std::vector<std::uint32_t> origin;
   origin.reserve(3 * triangles.size());
   for (const Spill_files::Triangle& t : triangles) origin.insert(origin.end(), t.begin(), t.end());
@@ -192,6 +237,7 @@ CGAL::Surface_mesh<Point> streamed_part(const std::vector<Point>& points,
   add_part_vertex_maps(
       part, [&](auto v) { return typename Mesh::Vertex_index(origin[std::size_t(v)]); },
       [&](auto o) { return vertex_cell[std::size_t(o)] == kCutCell; });
+  add_streamed_corner_values(part, origin, cell, kinds);
   return part;
 }
 

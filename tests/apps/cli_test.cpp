@@ -1247,27 +1247,31 @@ TEST_F(Cli, BadGltfIsOneBadInputLineAndNoOutput) {
   }
 }
 
-// A sphere streamed in two cells from a binary PLY (with a property besides x, y and z) and from an
-// OBJ (texture coordinates on its corners, indices counted back from the last vertex): the same
-// output from both, at the target, closed, and no spill file left in TMPDIR.
+// A sphere streamed in two cells from a binary PLY (with a property besides x, y, z and its
+// texture coordinates u, v) and from an OBJ (the same texture coordinates on its corners, indices
+// counted back from the last vertex and the last vt): the same output from both, texture
+// coordinates on every corner, at the target, closed, and no spill file left in TMPDIR.
 TEST_F(Cli, OutOfCoreReadsBinaryPlyAndObjAlike) {
   const Mesh sphere = test_meshes::loop_sphere(2);
   std::string ply = "ply\nformat binary_little_endian 1.0\nelement vertex " +
                     std::to_string(sphere.number_of_vertices()) +
                     "\nproperty float x\nproperty float y\nproperty float z\n"
-                    "property float confidence\nelement face " +
+                    "property float confidence\nproperty float u\nproperty float v\nelement face " +
                     std::to_string(sphere.number_of_faces()) +
                     "\nproperty list uchar int vertex_indices\nend_header\n";
-  std::string obj = "vt 0.5 0.5\n";
+  std::string obj;
   const auto append = [&ply](const auto value) {
     ply.append(reinterpret_cast<const char*>(&value), sizeof value);
   };
   for (const auto v : sphere.vertices()) {
     const apps::Point& p = sphere.point(v);
+    const float u = float(0.5 + 0.25 * p.x()), w = float(0.5 + 0.25 * p.y());
     for (const double c : {p.x(), p.y(), p.z(), 1.0}) append(float(c));
-    char line[96];  // each float exactly, as the PLY holds it
-    std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", double(float(p.x())),
-                  double(float(p.y())), double(float(p.z())));
+    append(u);
+    append(w);
+    char line[160];  // each float exactly, as the PLY holds it
+    std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\nvt %.17g %.17g\n", double(float(p.x())),
+                  double(float(p.y())), double(float(p.z())), double(u), double(w));
     obj += line;
   }
   const int vertices = int(sphere.number_of_vertices());
@@ -1276,7 +1280,7 @@ TEST_F(Cli, OutOfCoreReadsBinaryPlyAndObjAlike) {
     obj += "f";
     for (const auto v : CGAL::vertices_around_face(sphere.halfedge(f), sphere)) {
       append(std::int32_t(v));
-      obj += " " + std::to_string(int(v) - vertices) + "/1";
+      obj += " " + std::to_string(int(v) - vertices) + "/" + std::to_string(int(v) - vertices);
     }
     obj += "\n";
   }
@@ -1294,10 +1298,18 @@ TEST_F(Cli, OutOfCoreReadsBinaryPlyAndObjAlike) {
     EXPECT_EQ(json_number(r.out, "input_faces"), 320) << r.out;
     EXPECT_EQ(json_number(r.out, "output_faces"), 160) << r.out;
     EXPECT_EQ(json_number(r.out, "parts"), 2) << r.out;
-    const apps::Mesh_validity validity =
-        apps::check_mesh_validity(apps::read_triangle_mesh(out.string()));
+    EXPECT_NE(r.out.find("\"attributes\": \"carried\""), std::string::npos) << r.out;
+    const Mesh written =
+        apps::read_triangle_mesh(out.string(), nullptr, apps::Corner_attribute_reading::keep);
+    const apps::Mesh_validity validity = apps::check_mesh_validity(written);
     EXPECT_TRUE(validity.valid);
     EXPECT_TRUE(validity.closed);
+    const cgal_policies::Corner_attributes<apps::Point> attributes(written);
+    ASSERT_TRUE(attributes.uvs.has_value());
+    for (const auto h : written.halfedges())
+      if (!written.is_border(h)) {
+        EXPECT_TRUE(std::isfinite((*attributes.uvs)[h][0]));
+      }
     outputs[name == "sphere.obj"] = read_text(out);
   }
   ::unsetenv("TMPDIR");

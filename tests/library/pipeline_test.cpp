@@ -16,6 +16,7 @@
 #include <cgal_policies/Face_count_stop_predicate.h>
 #include <cgal_policies/Fast_threshold_simplifier.h>
 #include <cgal_policies/internal/Mesh_parts.h>
+#include <cgal_policies/internal/Streamed_corners.h>
 #include <cgal_policies/internal/raw_mesh_file.h>
 #include <cgal_policies/internal/run_partitioned.h>
 
@@ -1013,6 +1014,36 @@ Vector_source source_of(const Mesh& mesh) {
   return source;
 }
 
+// A Vector_source whose corners carry texture coordinates and whose faces carry materials, read
+// from a mesh's maps, as Streamed_mesh_file gives them.
+struct Textured_vector_source : Vector_source {
+  using Attributes = cgal_policies::Corner_attributes<Point>;
+  std::vector<cgal_policies::internal::Streamed_corners<Point>> corners;
+
+  Attributes::Kinds corner_kinds() const { return {true, false, false, true, false}; }
+  template <class F>
+  void for_each_triangle(F f) const {
+    if (passes++ == failing_pass) throw std::runtime_error("the source failed");
+    for (std::size_t i = 0; i < triangles.size(); ++i)
+      f(triangles[i][0], triangles[i][1], triangles[i][2], corners[i]);
+  }
+};
+
+Textured_vector_source textured_source_of(const Mesh& mesh) {
+  Textured_vector_source source;
+  static_cast<Vector_source&>(source) = source_of(mesh);
+  const Textured_vector_source::Attributes attributes(mesh);
+  for (const auto f : mesh.faces()) {
+    cgal_policies::internal::Streamed_corners<Point> c;
+    c.material = (*attributes.materials)[f];
+    int k = 0;
+    for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh))
+      c.values[std::size_t(k++)] = attributes.values(h);
+    source.corners.push_back(c);
+  }
+  return source;
+}
+
 // A temporary folder of its own for a streamed run's spill files (TMPDIR while it lives), to
 // check that the run leaves nothing in it.
 class Temporary_folder {
@@ -1116,6 +1147,56 @@ TEST(StreamedRun, KeepsWhatAPartitionedRunKeepsOnTheBunny) {
   }
   EXPECT_FALSE(bytes[0].empty());
   EXPECT_TRUE(bytes[0] == bytes[1]) << "one thread and two wrote different files";
+  EXPECT_TRUE(folder.empty());
+}
+
+// A sphere whose texture coordinates are a linear function of the point, with a seam where u jumps
+// by 2, and a material for each side of the seam, streamed in two cells with the fit: the output
+// carries both, each corner's u on its face's side of the seam (no value mixed across it), both
+// materials used, closed, and no spill file left.
+TEST(StreamedRun, CarriesTheSourcesCornerValuesAndMaterials) {
+  using Attributes = cgal_policies::Corner_attributes<Point>;
+  Mesh sphere = loop_sphere(3);
+  const auto side = [&](Mesh::Face_index f) {
+    return CGAL::centroid(sphere.point(sphere.target(sphere.halfedge(f))),
+                          sphere.point(sphere.target(sphere.next(sphere.halfedge(f)))),
+                          sphere.point(sphere.source(sphere.halfedge(f))))
+               .z() < 0;
+  };
+  const auto uv_at = [](const Point& p, bool below) {
+    return Attributes::Uv{0.3 * p.x() + 0.1 * p.z() + (below ? 2 : 0), 0.2 * p.y() - 0.4 * p.z()};
+  };
+  test_meshes::paint_corner_map(
+      sphere, {true, false, false, true, false}, &Attributes::uvs,
+      [&](Mesh::Face_index f, const Point& p) { return uv_at(p, side(f)); });
+  const Attributes painted(sphere);
+  for (const auto f : sphere.faces()) (*painted.materials)[f] = side(f) ? 1 : 0;
+  const Textured_vector_source source = textured_source_of(sphere);
+  const Temporary_folder folder;
+  cgal_policies::Simplification_options options =
+      policy_alone("attributes", sphere.number_of_faces() / 8);
+  options.parts = 2;
+  options.fit = true;
+  Mesh mesh;
+  const cgal_policies::Simplification_report report =
+      apps::Pipeline(options).run_streamed(source, mesh);
+  EXPECT_EQ(report.parts, 2u);
+  EXPECT_TRUE(report.attributes_carried);
+  EXPECT_EQ(mesh.number_of_faces(), sphere.number_of_faces() / 8);
+  const Attributes carried(mesh);
+  ASSERT_TRUE(carried.uvs && carried.materials);
+  std::set<std::uint32_t> materials;
+  for (const auto f : mesh.faces()) {
+    const std::uint32_t material = (*carried.materials)[f];
+    materials.insert(material);
+    for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      const double u = (*carried.uvs)[h][0];  // |0.3 x + 0.1 z| < 1 on the unit sphere
+      EXPECT_TRUE(material == 1 ? u > 1 && u < 3 : u > -1 && u < 1) << u;
+      EXPECT_TRUE(std::isfinite((*carried.uvs)[h][1]));
+    }
+  }
+  EXPECT_EQ(materials, (std::set<std::uint32_t>{0, 1}));
+  EXPECT_TRUE(apps::check_mesh_validity(mesh).closed);
   EXPECT_TRUE(folder.empty());
 }
 
