@@ -70,14 +70,16 @@ class Hausdorff_input_surface {
 
   // An upper bound of p's distance (all the tests need): a walk across input edges from `hint`
   // while the distance drops; beyond the tolerance, the exact nearest triangle (the lowest index
-  // among equals, whatever the hint), searched with the walk's end as a first bound.
+  // among equals, whatever the hint), searched with the walk's end as a first bound. Without a
+  // tolerance the search always runs, and the hint's own distance bounds it: the walk's scattered
+  // reads cost more than the tighter bound saves (docs/fitting.md).
   Reference_sample nearest(const Eigen::Vector3d& p,
                            std::size_t hint = Reference_sample::kNoTriangle) const {
     Triangle_bvh::Hit start;
     if (hint != Reference_sample::kNoTriangle) {
       std::uint32_t at = m_position[hint];  // the walk goes by positions in the hierarchy
       double d2 = squared_distance_to_triangle(p, m_bvh.stored(at));
-      for (std::size_t step = 0; step < kWalkSteps; ++step) {
+      for (std::size_t step = 0; m_tolerance > 0 && step < kWalkSteps; ++step) {
         const std::uint32_t from = at;
         for (const std::uint32_t j : m_neighbours[from]) {
           if (j == kNoNeighbour) continue;
