@@ -70,7 +70,7 @@ int run(int argc, char** argv) {
     colors[std::size_t(v)] = {sum[0] / corners, sum[1] / corners, sum[2] / corners, 1};
   }
   Attributes::remove(mesh);
-  const Attributes colored = Attributes::add(mesh, {false, false, true, false, false});
+  const Attributes colored = Attributes::add(mesh, {false, false, true, false, false, false});
   for (const auto h : mesh.halfedges())
     if (!mesh.is_border(h)) (*colored.colors)[h] = colors[std::size_t(mesh.target(h))];
   write_mesh_atomically(mesh, output);

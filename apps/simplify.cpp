@@ -309,6 +309,9 @@ int run(int argc, char** argv) {
     if (!quiet)
       for (const std::string& repair : read_report.repairs)
         std::cerr << "simplify: " << input << ": " << repair << '\n';
+    // Even with --quiet: the output will lack something IN had.
+    for (const std::string& loss : read_report.left_out)
+      std::cerr << "simplify: warning: " << loss << '\n';
     // Before any work: a texture file the picture needs and cannot read is bad input; a glTF
     // image it cannot decode is a warning (texture_to_draw).
     if (snapshot)

@@ -122,8 +122,9 @@ class Attribute_quadric_policies {
   const Get_placement& get_placement() const { return *this; }
 
   // Puts the corner attributes of the carrier's mesh (the policy's) into the quadrics, and gives
-  // the carrier the values of each free collapse. The second set of texture coordinates has no
-  // term in the quadric: the carrier interpolates it. Call before edge_collapse.
+  // the carrier the values of each free collapse. The second set of texture coordinates and the
+  // skin influences have no term in the quadric: the carrier interpolates them. Call before
+  // edge_collapse.
   void carry_with(Carrier& carrier) {
     const std::shared_ptr<State> state = m_state;
     state->carrier = &carrier;

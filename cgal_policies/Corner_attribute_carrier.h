@@ -1,5 +1,5 @@
 // Carries the corner attributes of a CGAL::Surface_mesh (Corner_attributes.h: texture coordinates,
-// both sets, normals and colours) through edge collapses, and keeps their seams.
+// both sets, normals, colours and skin influences) through edge collapses, and keeps their seams.
 //
 // A seam edge is one whose two sides disagree at either end, or a border edge (an open chart stays
 // open). A vertex on no seam edge is free; on exactly two it lies along a seam; on one or three and
@@ -398,12 +398,14 @@ class Corner_attribute_carrier {
       const bool normal_missing = m_attributes.normals && !std::isfinite(v.normal.squared_length());
       const bool color_missing = m_attributes.colors && !finite(v.color);
       const bool second_uv_missing = m_attributes.second_uvs && !finite(v.second_uv);
-      if (uv_missing || normal_missing || color_missing || second_uv_missing) {
+      const bool skin_missing = m_attributes.skins && !finite(v.skin.weights);
+      if (uv_missing || normal_missing || color_missing || second_uv_missing || skin_missing) {
         const Values other = interpolated(star, root(i), x, star[i], corner, root).values;
         if (uv_missing) v.uv = other.uv;
         if (normal_missing) v.normal = other.normal;
         if (color_missing) v.color = other.color;
         if (second_uv_missing) v.second_uv = other.second_uv;
+        if (skin_missing) v.skin = other.skin;
       }
       values.push_back(value);
     }

@@ -43,7 +43,7 @@ using Carrier = cgal_policies::Corner_attribute_carrier<apps::Point>;
 // [0, 1] that vary with the point and the chart.
 void paint_corner_attributes(apps::Mesh& mesh, std::uint8_t mode) {
   if (!(mode & 1)) return;
-  const Attributes attributes = Attributes::add(mesh, {true, true, true, true, false});
+  const Attributes attributes = Attributes::add(mesh, {true, true, true, true, false, false});
   const int axis = (mode >> 1) % 3, charts = 1 + (mode >> 3) % 4;
   for (const auto f : mesh.faces()) {
     // A label that every policy keeps on the face, fast's rebuilt ones too.

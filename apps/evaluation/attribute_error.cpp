@@ -134,7 +134,7 @@ Attribute_error measure_attribute_error(const Mesh& a, const Mesh& b, std::size_
   const auto kinds_a = in_a.kinds(), kinds_b = in_b.kinds();
   if (in_a.any_corner_values() && kinds_a.uvs == kinds_b.uvs &&
       kinds_a.normals == kinds_b.normals && kinds_a.colors == kinds_b.colors &&
-      kinds_a.second_uvs == kinds_b.second_uvs) {
+      kinds_a.second_uvs == kinds_b.second_uvs && kinds_a.skins == kinds_b.skins) {
     const Seams seams_a = count_seams(a), seams_b = count_seams(b);
     error.seam_edges_a = seams_a.edges;
     error.seam_edges_b = seams_b.edges;

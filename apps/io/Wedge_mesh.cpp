@@ -39,6 +39,7 @@ Wedge_mesh wedge_mesh(const Mesh& mesh) {
         if (attributes.normals) result.normals.push_back(values.normal);
         if (attributes.colors) result.colors.push_back(values.color);
         if (attributes.second_uvs) result.second_uvs.push_back(values.second_uv);
+        if (attributes.skins) result.skins.push_back(values.skin);
       }
       triangle[k++] = wedge->second;
     }
@@ -84,6 +85,7 @@ Wedge_mesh cache_ordered(const Wedge_mesh& wedges) {
   move_values(wedges.normals, result.normals);
   move_values(wedges.colors, result.colors);
   move_values(wedges.second_uvs, result.second_uvs);
+  move_values(wedges.skins, result.skins);
   for (std::size_t i = 0; i < indices.size(); i += 3)
     result.triangles.push_back({remap[indices[i]], remap[indices[i + 1]], remap[indices[i + 2]]});
   return result;

@@ -6,6 +6,8 @@
 
 #include "Mesh_types.h"
 
+#include <cgal_policies/Corner_attributes.h>
+
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -14,11 +16,12 @@ namespace cgal_policies {
 namespace io {
 
 struct Wedge_mesh {
-  std::vector<Point> points;                            // one per wedge
-  std::vector<std::array<double, 2>> uvs;               // per wedge; empty when the mesh has none
-  std::vector<Kernel::Vector_3> normals;                // likewise
-  std::vector<std::array<double, 4>> colors;            // likewise, RGBA in [0, 1]
-  std::vector<std::array<double, 2>> second_uvs;        // likewise
+  std::vector<Point> points;                      // one per wedge
+  std::vector<std::array<double, 2>> uvs;         // per wedge; empty when the mesh has none
+  std::vector<Kernel::Vector_3> normals;          // likewise
+  std::vector<std::array<double, 4>> colors;      // likewise, RGBA in [0, 1]
+  std::vector<std::array<double, 2>> second_uvs;  // likewise
+  std::vector<Corner_attributes<Point>::Skin_influences> skins;  // likewise
   std::vector<std::array<std::uint32_t, 3>> triangles;  // wedge indices, in the mesh's face order
   std::vector<std::uint32_t> materials;  // per triangle; empty without a material map
 };

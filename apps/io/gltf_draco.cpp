@@ -23,8 +23,9 @@ namespace {
 }
 
 // The attributes the reader reads; the others keep no data.
-const std::array<std::string, 5> kReadAttributes = {"POSITION", "NORMAL", "TEXCOORD_0", "COLOR_0",
-                                                    "TEXCOORD_1"};
+const std::array<std::string, 9> kReadAttributes = {"POSITION",  "NORMAL",     "TEXCOORD_0",
+                                                    "COLOR_0",   "TEXCOORD_1", "JOINTS_0",
+                                                    "WEIGHTS_0", "JOINTS_1",   "WEIGHTS_1"};
 
 // The member `key` of `object`, or null when `object` is no object or has no such member.
 const nlohmann::json* member(const nlohmann::json& object, const char* key) {

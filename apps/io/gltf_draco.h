@@ -21,10 +21,11 @@ std::string with_loadable_draco_indices(std::string bytes, bool binary);
 
 // Decodes the Draco mesh of every triangle primitive of `model` that has the
 // KHR_draco_mesh_compression extension, and gives its indices accessor (made when it has none)
-// and the accessors of its POSITION, NORMAL, TEXCOORD_0, TEXCOORD_1 and COLOR_0 (the Draco
-// attributes the extension names by unique id) a buffer of their own holding the decoded values, in
-// the accessor's component type (u32 for the indices), so that they read as plain data. The other
-// attributes stay without data, as the reader skips them. Throws Io_error (unreadable input,
+// and the accessors of its POSITION, NORMAL, TEXCOORD_0, TEXCOORD_1, COLOR_0, JOINTS_0/1 and
+// WEIGHTS_0/1 (the Draco attributes the extension names by unique id) a buffer of their own holding
+// the decoded values, in the accessor's component type (u32 for the indices), so that they read as
+// plain data. The other attributes stay without data, as the reader skips them. Throws Io_error
+// (unreadable input,
 // "<path>: <cause>") when the compressed bytes are out of range or do not decode, or when what
 // they decode to does not match the accessors.
 void decode_draco_primitives(const std::string& path, tinygltf::Model& model);

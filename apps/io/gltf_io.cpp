@@ -22,6 +22,7 @@
 #include <iterator>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string_view>
 #include <type_traits>
@@ -105,6 +106,7 @@ Matrix local_matrix(const tinygltf::Node& node) {
 struct Placed_mesh {
   int mesh;
   Matrix world;
+  int skin;  // its node's, or -1
 };
 
 // Deeper hierarchies are refused rather than risking the stack on a forged file.
@@ -166,7 +168,7 @@ void place_node(const std::string& path, const tinygltf::Model& model, int node,
     fail(path, "the node hierarchy has a cycle");
   const tinygltf::Node& n = model.nodes[std::size_t(shown)];
   const Matrix world = product(parent, local_matrix(n));
-  if (n.mesh >= 0) placed.push_back({n.mesh, world});
+  if (n.mesh >= 0) placed.push_back({n.mesh, world, n.skin});
   on_path[std::size_t(node)] = on_path[std::size_t(shown)] = 1;
   for (int child : n.children)
     place_node(path, model, child, world, on_path, depth + 1, walk, placed);
@@ -177,7 +179,7 @@ std::vector<Placed_mesh> placed_meshes(const std::string& path, const tinygltf::
                                        Lod_walk& walk) {
   std::vector<Placed_mesh> placed;
   if (model.scenes.empty()) {
-    for (std::size_t m = 0; m < model.meshes.size(); ++m) placed.push_back({int(m), kIdentity});
+    for (std::size_t m = 0; m < model.meshes.size(); ++m) placed.push_back({int(m), kIdentity, -1});
     return placed;
   }
   const int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
@@ -386,6 +388,13 @@ struct Attribute_rules {
   static Accessor_rule color(int type) {
     return {type, {kFloat, kUnsignedByte, kUnsignedShort}, Integers::normalized};
   }
+  // JOINTS_n and WEIGHTS_n, as the core spec allows them (KHR_mesh_quantization adds none).
+  static Accessor_rule joints() {
+    return {TINYGLTF_TYPE_VEC4, {kUnsignedByte, kUnsignedShort}, Integers::not_normalized};
+  }
+  static Accessor_rule weights() {
+    return {TINYGLTF_TYPE_VEC4, {kFloat, kUnsignedByte, kUnsignedShort}, Integers::normalized};
+  }
 };
 
 bool uses(const tinygltf::Model& model, const std::string& extension) {
@@ -447,14 +456,16 @@ std::array<double, 6> texture_transform(const tinygltf::Material& material, int 
 // corner tables an entry for each glTF vertex.
 class Soup_builder {
   // The kinds of corner values, in the order of m_any.
-  static constexpr std::size_t kKinds = 4;
+  static constexpr std::size_t kKinds = 5;
 
  public:
-  Soup_builder(const std::string& path, const tinygltf::Model& model)
+  // `skin`: the skin whose influences the soup carries (carried_skin), or -1.
+  Soup_builder(const std::string& path, const tinygltf::Model& model, int skin)
       : m_path(path),
         m_model(model),
         m_rules(uses(model, "KHR_mesh_quantization")),
-        m_quantized(uses(model, "KHR_mesh_quantization")) {}
+        m_quantized(uses(model, "KHR_mesh_quantization")),
+        m_skin(skin) {}
 
   void add_primitive(const tinygltf::Primitive& primitive, const Matrix& world,
                      const std::string& what) {
@@ -475,14 +486,16 @@ class Soup_builder {
 
     Corner_tables& tables = m_soup.corners;
     const std::array<std::size_t, kKinds> base = {tables.uvs.size(), tables.normals.size(),
-                                                  tables.colors.size(), tables.second_uvs.size()};
+                                                  tables.colors.size(), tables.second_uvs.size(),
+                                                  tables.skins.size()};
     const std::array<bool, kKinds> with = {read_uvs(primitive, 0, vertices, what),
                                            read_normals(primitive, vertices, moved, world, what),
                                            read_colors(primitive, vertices, what),
-                                           read_uvs(primitive, 1, vertices, what)};
+                                           read_uvs(primitive, 1, vertices, what),
+                                           read_skin(primitive, vertices, what)};
     const std::array<std::vector<std::vector<std::size_t>>*, kKinds> lists = {
         &tables.polygon_uvs, &tables.polygon_normals, &tables.polygon_colors,
-        &tables.polygon_second_uvs};
+        &tables.polygon_second_uvs, &tables.polygon_skins};
 
     const std::vector<std::size_t> corners = triangle_corners(primitive, vertices, what);
     if (primitive.material >= 0 && std::size_t(primitive.material) >= m_model.materials.size())
@@ -522,6 +535,7 @@ class Soup_builder {
     if (!m_any[1]) corners.polygon_normals.clear();
     if (!m_any[2]) corners.polygon_colors.clear();
     if (!m_any[3]) corners.polygon_second_uvs.clear();
+    if (!m_any[4]) corners.polygon_skins.clear();
     if (std::all_of(corners.polygon_materials.begin(), corners.polygon_materials.end(),
                     [](std::uint32_t m) { return m == Corner_tables::kNoMaterial; }))
       corners.polygon_materials.clear();
@@ -617,6 +631,42 @@ class Soup_builder {
     return true;
   }
 
+  // The influences of JOINTS_n and WEIGHTS_n, for every set n the primitive has (sets past the
+  // first hold the influences past four): each vertex keeps its four heaviest joints,
+  // renormalised (Corner_attributes::normalized_skin).
+  bool read_skin(const tinygltf::Primitive& primitive, std::size_t vertices,
+                 const std::string& what) {
+    if (m_skin < 0) return false;
+    const std::size_t skin_joints = m_model.skins[std::size_t(m_skin)].joints.size();
+    std::vector<std::vector<std::pair<std::uint16_t, double>>> influences(vertices);
+    for (int set = 0;; ++set) {
+      const std::string joints_name = "JOINTS_" + std::to_string(set),
+                        weights_name = "WEIGHTS_" + std::to_string(set);
+      const auto joints = primitive.attributes.find(joints_name);
+      const auto weights = primitive.attributes.find(weights_name);
+      if (joints == primitive.attributes.end() || weights == primitive.attributes.end()) break;
+      const std::vector<double> joint_values = accessor_values(
+          m_path, m_model, joints->second, Attribute_rules::joints(), what + " " + joints_name);
+      const std::vector<double> weight_values = accessor_values(
+          m_path, m_model, weights->second, Attribute_rules::weights(), what + " " + weights_name);
+      check_vertex_count(joint_values.size() / 4, vertices, what + " " + joints_name);
+      check_vertex_count(weight_values.size() / 4, vertices, what + " " + weights_name);
+      check_finite(m_path, weight_values, 4, what + ": the weight (" + weights_name + ")");
+      for (std::size_t i = 0; i < joint_values.size(); ++i) {
+        if (!(weight_values[i] > 0)) continue;  // an unused slot may name any joint
+        if (joint_values[i] >= double(skin_joints))
+          fail(m_path, what + ": joint " + std::to_string(std::size_t(joint_values[i])) +
+                           " of vertex " + std::to_string(i / 4) + " is out of range (skin " +
+                           std::to_string(m_skin) + " has " + std::to_string(skin_joints) +
+                           " joints)");
+        influences[i / 4].emplace_back(std::uint16_t(joint_values[i]), weight_values[i]);
+      }
+    }
+    for (auto& vertex : influences)
+      m_soup.corners.skins.push_back(Corner_attributes<Point>::normalized_skin(std::move(vertex)));
+    return true;
+  }
+
   void check_vertex_count(std::size_t count, std::size_t vertices, const std::string& what) {
     if (count != vertices)
       fail(m_path, what + ": " + std::to_string(count) + " values for " + std::to_string(vertices) +
@@ -627,8 +677,10 @@ class Soup_builder {
   const tinygltf::Model& m_model;
   const Attribute_rules m_rules;
   const bool m_quantized;
+  const int m_skin;
   Polygon_soup m_soup;
-  // Whether any primitive has texture coordinates, normals, colours, second texture coordinates.
+  // Whether any primitive has texture coordinates, normals, colours, second texture coordinates,
+  // skin influences.
   std::array<bool, kKinds> m_any{};
 };
 
@@ -673,7 +725,7 @@ std::string uri_of_path(const fs::path& path) {
 
 // What a written file keeps of the input: its looks, image files named by absolute path and
 // embedded images as bytes (the geometry's buffers are not needed any more).
-std::shared_ptr<const tinygltf::Model> kept_looks(tinygltf::Model& model, const std::string& path) {
+std::shared_ptr<tinygltf::Model> kept_looks(tinygltf::Model& model, const std::string& path) {
   auto looks = std::make_shared<tinygltf::Model>();
   const fs::path folder = fs::absolute(path).parent_path();
   for (tinygltf::Image& image : model.images) {
@@ -746,21 +798,131 @@ tinygltf::Model loaded_model(const std::string& path, bool binary) {
   return model;
 }
 
-// The soup of the meshes `placed`.
+// The primitives of mesh `mesh`, after checking that it exists.
+const std::vector<tinygltf::Primitive>& primitives_of(const std::string& path,
+                                                      const tinygltf::Model& model, int mesh) {
+  if (mesh < 0 || std::size_t(mesh) >= model.meshes.size())
+    fail(path, "mesh " + std::to_string(mesh) + " does not exist");
+  return model.meshes[std::size_t(mesh)].primitives;
+}
+
+// The skin whose influences the soups carry: the one skin that skins every mesh placed at every
+// level, when each of their triangle primitives has JOINTS_0 and WEIGHTS_0; -1 otherwise, and
+// then, when some placed mesh has a skin, `left_out` says why it is left out.
+int carried_skin(const std::string& path, const tinygltf::Model& model,
+                 const std::vector<std::vector<Placed_mesh>>& levels,
+                 std::vector<std::string>& left_out) {
+  std::set<int> skins;
+  for (const std::vector<Placed_mesh>& placed : levels)
+    for (const Placed_mesh& mesh : placed) {
+      if (mesh.skin >= 0 && std::size_t(mesh.skin) >= model.skins.size())
+        fail(path, "skin " + std::to_string(mesh.skin) + " does not exist");
+      skins.insert(mesh.skin);
+    }
+  if (skins.empty() || *skins.rbegin() < 0) return -1;
+  std::string reason;
+  if (skins.size() > 1)
+    reason = skins.count(-1) ? "skinned and unskinned meshes together" : "more than one skin";
+  for (const std::vector<Placed_mesh>& placed : levels)
+    for (const Placed_mesh& mesh : placed) {
+      const std::vector<tinygltf::Primitive>& primitives = primitives_of(path, model, mesh.mesh);
+      for (std::size_t p = 0; p < primitives.size() && reason.empty(); ++p) {
+        const tinygltf::Primitive& primitive = primitives[p];
+        const bool triangles = primitive.mode < 0 || primitive.mode == TINYGLTF_MODE_TRIANGLES;
+        if (triangles &&
+            !(primitive.attributes.count("JOINTS_0") && primitive.attributes.count("WEIGHTS_0")))
+          reason = "mesh " + std::to_string(mesh.mesh) + " primitive " + std::to_string(p) +
+                   " has no JOINTS_0 and WEIGHTS_0";
+      }
+    }
+  if (reason.empty()) return *skins.begin();
+  left_out.push_back(path + ": the skin is left out (" + reason +
+                     "); every mesh is placed by its node's transform");
+  return -1;
+}
+
+// The soup of the meshes `placed`; those skinned by `skin` (carried_skin) where they are, as glTF
+// ignores a skinned mesh's node transform, with their influences.
 Polygon_soup soup_of(const std::string& path, const tinygltf::Model& model,
-                     const std::vector<Placed_mesh>& placed) {
-  Soup_builder builder(path, model);
+                     const std::vector<Placed_mesh>& placed, int skin) {
+  Soup_builder builder(path, model, skin);
   for (const Placed_mesh& mesh : placed) {
-    if (mesh.mesh < 0 || std::size_t(mesh.mesh) >= model.meshes.size())
-      fail(path, "mesh " + std::to_string(mesh.mesh) + " does not exist");
-    const std::vector<tinygltf::Primitive>& primitives =
-        model.meshes[std::size_t(mesh.mesh)].primitives;
+    const std::vector<tinygltf::Primitive>& primitives = primitives_of(path, model, mesh.mesh);
     for (std::size_t p = 0; p < primitives.size(); ++p)
       builder.add_primitive(
-          primitives[p], mesh.world,
+          primitives[p], skin >= 0 ? kIdentity : mesh.world,
           "mesh " + std::to_string(mesh.mesh) + " primitive " + std::to_string(p));
   }
   return std::move(builder).soup();
+}
+
+// The nodes skin `skin` needs, with the skin, for a written file to pose the mesh as the input
+// does: its joints and skeleton root and all their ancestors, in the input's order, each with its
+// name, transform and the children among them (no mesh, camera or extension); the skin's joints
+// and skeleton named among them, and its inverse bind matrices (when it has them) as accessor 0, a
+// view and a buffer of MAT4 floats.
+void keep_skeleton(const std::string& path, const tinygltf::Model& model, int skin,
+                   tinygltf::Model& looks) {
+  const tinygltf::Skin& input = model.skins[std::size_t(skin)];
+  std::vector<int> parent(model.nodes.size(), -1);
+  for (std::size_t n = 0; n < model.nodes.size(); ++n)
+    for (int child : model.nodes[n].children)
+      if (child >= 0 && std::size_t(child) < model.nodes.size())
+        parent[std::size_t(child)] = int(n);
+  std::vector<char> kept(model.nodes.size(), 0);
+  std::vector<int> named = input.joints;
+  if (input.skeleton >= 0) named.push_back(input.skeleton);
+  for (int node : named) {
+    if (node < 0 || std::size_t(node) >= model.nodes.size())
+      fail(path, "skin " + std::to_string(skin) + " names node " + std::to_string(node) +
+                     ", which does not exist");
+    // At most one step per node: a cycle of parents (a forged file) stops.
+    for (std::size_t steps = 0; node >= 0 && steps <= model.nodes.size(); ++steps) {
+      kept[std::size_t(node)] = 1;
+      node = parent[std::size_t(node)];
+    }
+  }
+  std::vector<int> index(model.nodes.size(), -1);
+  for (std::size_t n = 0; n < model.nodes.size(); ++n)
+    if (kept[n]) index[n] = int(looks.nodes.size()), looks.nodes.emplace_back();
+  for (std::size_t n = 0; n < model.nodes.size(); ++n) {
+    if (!kept[n]) continue;
+    const tinygltf::Node& from = model.nodes[n];
+    tinygltf::Node& to = looks.nodes[std::size_t(index[n])];
+    to.name = from.name;
+    to.matrix = from.matrix;
+    to.translation = from.translation;
+    to.rotation = from.rotation;
+    to.scale = from.scale;
+    for (int child : from.children)
+      if (child >= 0 && std::size_t(child) < model.nodes.size() && kept[std::size_t(child)])
+        to.children.push_back(index[std::size_t(child)]);
+  }
+  tinygltf::Skin& kept_skin = looks.skins.emplace_back();
+  kept_skin.name = input.name;
+  for (int joint : input.joints) kept_skin.joints.push_back(index[std::size_t(joint)]);
+  kept_skin.skeleton = input.skeleton >= 0 ? index[std::size_t(input.skeleton)] : -1;
+  if (input.inverseBindMatrices < 0) return;
+  const std::vector<double> matrices =
+      accessor_values(path, model, input.inverseBindMatrices,
+                      {TINYGLTF_TYPE_MAT4, {kFloat}, Integers::not_normalized},
+                      "skin " + std::to_string(skin) + " inverseBindMatrices");
+  if (matrices.size() != 16 * input.joints.size())
+    fail(path, "skin " + std::to_string(skin) + ": " + std::to_string(matrices.size() / 16) +
+                   " inverse bind matrices for " + std::to_string(input.joints.size()) + " joints");
+  const std::vector<float> floats(matrices.begin(), matrices.end());
+  looks.buffers.emplace_back().data.assign(
+      reinterpret_cast<const unsigned char*>(floats.data()),
+      reinterpret_cast<const unsigned char*>(floats.data() + floats.size()));
+  tinygltf::BufferView& view = looks.bufferViews.emplace_back();
+  view.buffer = 0;
+  view.byteLength = floats.size() * sizeof(float);
+  tinygltf::Accessor& accessor = looks.accessors.emplace_back();
+  accessor.bufferView = 0;
+  accessor.componentType = kFloat;
+  accessor.type = TINYGLTF_TYPE_MAT4;
+  accessor.count = input.joints.size();
+  kept_skin.inverseBindMatrices = 0;
 }
 
 // read_gltf_levels, or with `follow_lod` false the finest level alone, as read_gltf reads it.
@@ -768,12 +930,17 @@ std::vector<Gltf_soup> read_levels(const std::string& path, bool binary, bool fo
   tinygltf::Model model = loaded_model(path, binary);
   Lod_walk walk;
   walk.follow_lod = follow_lod;
-  std::vector<Gltf_soup> levels;
+  std::vector<std::vector<Placed_mesh>> placed;
   // Level 0's walk finds how many levels there are.
-  for (; walk.level < walk.levels; ++walk.level)
-    levels.push_back({soup_of(path, model, placed_meshes(path, model, walk)), nullptr});
+  for (; walk.level < walk.levels; ++walk.level) placed.push_back(placed_meshes(path, model, walk));
+  std::vector<std::string> left_out;
+  const int skin = carried_skin(path, model, placed, left_out);
+  std::vector<Gltf_soup> levels;
+  for (const std::vector<Placed_mesh>& level : placed)
+    levels.push_back({soup_of(path, model, level, skin), nullptr, left_out});
   // Last: the soups above name the materials, which the looks take away.
-  const std::shared_ptr<const tinygltf::Model> looks = kept_looks(model, path);
+  std::shared_ptr<tinygltf::Model> looks = kept_looks(model, path);
+  if (skin >= 0) keep_skeleton(path, model, skin, *looks);
   for (Gltf_soup& level : levels) level.looks = looks;
   return levels;
 }
@@ -1061,14 +1228,101 @@ std::vector<tinygltf::Primitive> primitives_per_material(tinygltf::Model& model,
   return primitives;
 }
 
+// A vertex's skin influences as glTF stores them: four joints and weights whose stored sum is
+// exactly 1, the first weight (the largest) taking up the others' rounding, and a slot whose
+// stored weight is 0 naming joint 0. A corner without influences gets joint 0 with weight 1, as
+// glTF has no "none". `Weight` is float, or a normalized unsigned integer.
+template <class Weight>
+void stored_influences(const Corner_attributes<Point>::Skin_influences& skin,
+                       std::array<std::uint16_t, 4>& joints, std::array<Weight, 4>& weights) {
+  constexpr bool integer = std::is_integral_v<Weight>;
+  constexpr Weight one = integer ? std::numeric_limits<Weight>::max() : Weight(1);
+  joints = skin.joints;
+  weights = {one, 0, 0, 0};
+  if (std::isnan(skin.weights[0])) {
+    joints = {0, 0, 0, 0};
+    return;
+  }
+  for (std::size_t i = 1; i < 4; ++i) {
+    if constexpr (integer)
+      weights[i] = normalized_integer<Weight>(skin.weights[i], 0);
+    else
+      weights[i] = Weight(skin.weights[i]);
+    weights[0] = Weight(weights[0] - weights[i]);
+    if (weights[i] == 0) joints[i] = 0;
+  }
+}
+
+// JOINTS_0 (u8 when every joint is below 256, u16 otherwise) and WEIGHTS_0 (float; quantized,
+// normalized u16) of the wedges' influences (stored_influences).
+void add_skin_influences(tinygltf::Model& model,
+                         const std::vector<Corner_attributes<Point>::Skin_influences>& skins,
+                         bool quantized, tinygltf::Primitive& shape) {
+  std::vector<std::uint16_t> joints;
+  std::vector<float> floats;
+  std::vector<std::uint16_t> steps;
+  for (const auto& skin : skins) {
+    std::array<std::uint16_t, 4> stored_joints;
+    if (quantized) {
+      std::array<std::uint16_t, 4> weights;
+      stored_influences(skin, stored_joints, weights);
+      steps.insert(steps.end(), weights.begin(), weights.end());
+    } else {
+      std::array<float, 4> weights;
+      stored_influences(skin, stored_joints, weights);
+      floats.insert(floats.end(), weights.begin(), weights.end());
+    }
+    joints.insert(joints.end(), stored_joints.begin(), stored_joints.end());
+  }
+  const bool bytes = std::all_of(joints.begin(), joints.end(), [](auto j) { return j < 256; });
+  shape.attributes["JOINTS_0"] =
+      bytes
+          ? append_integer_attribute(model, std::vector<std::uint8_t>(joints.begin(), joints.end()),
+                                     TINYGLTF_TYPE_VEC4, false)
+          : append_integer_attribute(model, joints, TINYGLTF_TYPE_VEC4, false);
+  shape.attributes["WEIGHTS_0"] =
+      quantized ? append_integer_attribute(model, steps, TINYGLTF_TYPE_VEC4, true)
+                : append_float_attribute(model, floats, TINYGLTF_TYPE_VEC4);
+}
+
+// The skeleton that `looks` kept (keep_skeleton), appended to `model`: its nodes after those
+// `model` has, its skin as `model`'s skin 0, and its inverse bind matrices. Returns the
+// skeleton's roots, for the scene to hold.
+std::vector<int> append_skeleton(tinygltf::Model& model, const tinygltf::Model& looks) {
+  const int first = int(model.nodes.size());
+  std::vector<char> is_child(looks.nodes.size(), 0);
+  for (tinygltf::Node node : looks.nodes) {
+    for (int& child : node.children) {
+      is_child[std::size_t(child)] = 1;
+      child += first;
+    }
+    model.nodes.push_back(std::move(node));
+  }
+  tinygltf::Skin skin = looks.skins.front();
+  for (int& joint : skin.joints) joint += first;
+  if (skin.skeleton >= 0) skin.skeleton += first;
+  if (skin.inverseBindMatrices >= 0) {
+    const std::vector<unsigned char>& matrices = looks.buffers.front().data;
+    const int view = append_view(model, matrices.data(), matrices.size(), 0);
+    skin.inverseBindMatrices =
+        append_accessor(model, view, 0, kFloat, TINYGLTF_TYPE_MAT4, looks.accessors.front().count);
+  }
+  model.skins.push_back(std::move(skin));
+  std::vector<int> roots;
+  for (std::size_t n = 0; n < looks.nodes.size(); ++n)
+    if (!is_child[n]) roots.push_back(first + int(n));
+  return roots;
+}
+
 // A level's mesh and the node holding it: its wedges' attributes, its indices, and a primitive per
 // material (primitives_per_material); every primitive shares the wedges. Quantized, the node's
-// transform dequantizes the positions (KHR_mesh_quantization).
-void add_level(tinygltf::Model& model, const Wedge_mesh& wedges, bool quantized) {
+// transform dequantizes the positions (KHR_mesh_quantization), unless the mesh is `skinned` (by
+// skin 0): glTF ignores a skinned mesh's node transform, so its positions stay float.
+void add_level(tinygltf::Model& model, const Wedge_mesh& wedges, bool quantized, bool skinned) {
   tinygltf::Node node;
   tinygltf::Primitive shape;
   shape.mode = TINYGLTF_MODE_TRIANGLES;
-  if (quantized) {
+  if (quantized && !skinned) {
     const Position_grid grid = position_grid(wedges.points);
     shape.attributes["POSITION"] = append_quantized_positions(model, wedges.points, grid);
     node.translation.assign(grid.origin.begin(), grid.origin.end());
@@ -1092,6 +1346,10 @@ void add_level(tinygltf::Model& model, const Wedge_mesh& wedges, bool quantized)
     shape.attributes["TEXCOORD_1"] = append_uvs(model, wedges.second_uvs, quantized);
   if (!wedges.colors.empty())
     shape.attributes["COLOR_0"] = append_colors(model, wedges.colors, quantized);
+  if (skinned) {
+    add_skin_influences(model, wedges.skins, quantized, shape);
+    node.skin = 0;
+  }
   tinygltf::Mesh mesh;
   // Quantized, 16-bit indices when every one fits: glTF reserves 65535, a type's largest value.
   mesh.primitives = quantized && wedges.points.size() <= 65535
@@ -1139,11 +1397,18 @@ std::string gltf_bytes(const std::vector<Lod_level>& levels, bool binary, Gltf_e
                      : obj_material_looks(materials, !wedges.front().uvs.empty(), left_out);
   pass_looks_through(model, *looks, fs::absolute(output_folder).lexically_normal());
   const bool quantized = encoding != Gltf_encoding::float32;
-  for (const Wedge_mesh& level : wedges) add_level(model, level, quantized);
+  // Every level carries the same kinds of values as the first.
+  const bool skinned = !wedges.front().skins.empty() && !looks->skins.empty();
+  if (!wedges.front().skins.empty() && !skinned)
+    left_out.push_back("the skin: the input's skeleton is not known, written without it");
+  for (const Wedge_mesh& level : wedges) add_level(model, level, quantized, skinned);
   if (quantized) declare_extension(model, "KHR_mesh_quantization", true);
-  // The finest level is the scene's; the others are reached through its MSFT_lod alone.
+  // The finest level is the scene's, with the skeleton's roots; the others are reached through its
+  // MSFT_lod alone.
   model.scenes.emplace_back();
   model.scenes.back().nodes.push_back(0);
+  if (skinned)
+    for (int root : append_skeleton(model, *looks)) model.scenes.back().nodes.push_back(root);
   model.defaultScene = 0;
   if (levels.size() > 1) {
     tinygltf::Value::Array coarser, coverage;

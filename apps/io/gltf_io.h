@@ -19,7 +19,10 @@ struct Gltf_soup {
   // The file's materials, textures, samplers and images, for a glTF file written from this mesh
   // to keep: an image stored in the file (a bufferView or a data URI) keeps its bytes as they
   // were, undecoded; an image in a file of its own keeps its uri, made absolute.
+  // With skin influences, it also holds the skeleton they refer to (keep_skeleton in
+  // gltf_io.cpp): the skin, its joint nodes and their ancestors, and its inverse bind matrices.
   std::shared_ptr<const tinygltf::Model> looks;
+  std::vector<std::string> left_out;  // what the reader could not carry, a line each
 };
 
 // The file at `path`, a GLB when `binary`: every triangle primitive of every mesh that the
@@ -34,9 +37,17 @@ struct Gltf_soup {
 // its material (names: the material's name, or "material_<i>" when it has none).
 // KHR_mesh_quantization's integer positions, normals and texture coordinates, sparse accessors,
 // EXT_meshopt_compression's views (gltf_meshopt.h) and KHR_draco_mesh_compression's primitives
-// (gltf_draco.h) are read as their values; skins and morph targets are skipped. The
+// (gltf_draco.h) are read as their values; morph targets and animations are skipped. The
 // points are joined where exactly equal (join_equal_points), so that the vertices a UV seam or a
-// primitive boundary splits become one vertex whose corners disagree. Throws Io_error (unreadable
+// primitive boundary splits become one vertex whose corners disagree.
+// Skins: when one skin skins every mesh placed (at every level of detail) and each of their
+// triangle primitives has JOINTS_0 and WEIGHTS_0 (u8 or u16 joints; float, or normalized u8 or
+// u16 weights), the meshes are taken where they are, untransformed, as glTF ignores a skinned
+// mesh's node transform, and each glTF vertex gives the corner tables its skin influences: its
+// four heaviest joints of JOINTS_n/WEIGHTS_n, every set n (more than four influences are merged),
+// renormalised. Otherwise a skin is left out, `left_out` saying why, and every mesh is placed by
+// its node's transform. A joint outside the skin's range, or a skin naming a node that does not
+// exist, is bad input. Throws Io_error (unreadable
 // input, "<path>: <cause>") for a file tinygltf cannot load (malformed JSON or GLB, a buffer file
 // missing), a required extension other than those three and KHR_texture_transform, compressed
 // data that do not decode, an accessor or index out of range, a position, normal, texture

@@ -97,15 +97,16 @@ using Attributes = cgal_policies::Corner_attributes<Point>;
 
 // The maps a soup's corner tables fill.
 Attributes::Kinds kinds_of(const Corner_tables& corners) {
-  return {!corners.polygon_uvs.empty(), !corners.polygon_normals.empty(),
-          !corners.polygon_colors.empty(), !corners.polygon_materials.empty(),
-          !corners.polygon_second_uvs.empty()};
+  return {!corners.polygon_uvs.empty(),        !corners.polygon_normals.empty(),
+          !corners.polygon_colors.empty(),     !corners.polygon_materials.empty(),
+          !corners.polygon_second_uvs.empty(), !corners.polygon_skins.empty()};
 }
 
 bool has_corner_attributes(const Corner_tables* corners) {
   if (!corners) return false;
   const Attributes::Kinds kinds = kinds_of(*corners);
-  return kinds.uvs || kinds.normals || kinds.colors || kinds.materials || kinds.second_uvs;
+  return kinds.uvs || kinds.normals || kinds.colors || kinds.materials || kinds.second_uvs ||
+         kinds.skins;
 }
 
 // Puts the attributes of `corners` on the mesh built from `polygons`, whose face i is polygon i;
@@ -130,6 +131,7 @@ void set_corner_attributes(Mesh& mesh, const std::vector<Polygon>& polygons,
       copy(attributes.normals, corners.polygon_normals, corners.normals);
       copy(attributes.colors, corners.polygon_colors, corners.colors);
       copy(attributes.second_uvs, corners.polygon_second_uvs, corners.second_uvs);
+      copy(attributes.skins, corners.polygon_skins, corners.skins);
     }
   }
 }
@@ -164,10 +166,12 @@ bool is_gltf(const std::string& extension) { return extension == ".gltf" || exte
 
 // The soup of a file of any format but STL, and its glTF looks when it is one.
 Polygon_soup read_soup(const std::string& path, const std::string& extension,
-                       std::shared_ptr<const tinygltf::Model>& gltf_looks) {
+                       std::shared_ptr<const tinygltf::Model>& gltf_looks,
+                       std::vector<std::string>& left_out) {
   if (is_gltf(extension)) {
     Gltf_soup read = read_gltf(path, extension == ".glb");
     gltf_looks = std::move(read.looks);
+    left_out = std::move(read.left_out);
     return std::move(read.soup);
   }
   const std::string bytes = file_bytes(path);
@@ -188,7 +192,8 @@ Mesh mesh_of_soup(const std::string& path, const std::string& source, Polygon_so
       !(tables.uvs.empty() && tables.normals.empty() && tables.colors.empty()))
     join_equal_points(soup);
   Mesh mesh = triangle_mesh_from_soup(source, soup.points, soup.polygons, report, &soup.corners);
-  if (report && Attributes(mesh).materials) {
+  const Attributes kept(mesh);
+  if (report && (kept.materials || kept.skins)) {  // a glTF file's looks hold its skeleton too
     const fs::path folder = fs::absolute(path).parent_path();
     for (const std::string& library : soup.corners.material_libraries)
       report->materials.libraries.push_back((folder / library).lexically_normal().string());
@@ -266,13 +271,20 @@ std::vector<std::string> write_files_atomically(const std::vector<Lod_level>& le
     return CGAL::IO::write_polygon_mesh(temporary, mesh, CGAL::parameters::stream_precision(17));
   });
   std::vector<std::string> left_out = library.left_out;
-  // OBJ and PLY hold one set of texture coordinates; the others no corner values at all.
-  const bool second_uvs = std::any_of(levels.begin(), levels.end(), [](const Lod_level& level) {
-    return Attributes(*level.mesh).second_uvs.has_value();
-  });
-  if (second_uvs && (obj || extension == ".ply"))
-    left_out.push_back(path + ": the second texture coordinates (glTF's TEXCOORD_1); " +
-                       (obj ? "OBJ" : "PLY") + " holds one set, written without them");
+  // OBJ and PLY hold one set of texture coordinates and no skin; the others no corner values at
+  // all.
+  if (!obj && extension != ".ply") return left_out;
+  const auto any_level = [&levels](auto has) {
+    return std::any_of(levels.begin(), levels.end(),
+                       [&has](const Lod_level& level) { return has(Attributes(*level.mesh)); });
+  };
+  const std::string format = obj ? "OBJ" : "PLY";
+  if (any_level([](const Attributes& a) { return a.second_uvs.has_value(); }))
+    left_out.push_back(path + ": the second texture coordinates (glTF's TEXCOORD_1); " + format +
+                       " holds one set, written without them");
+  if (any_level([](const Attributes& a) { return a.skins.has_value(); }))
+    left_out.push_back(path + ": the skin (glTF's JOINTS_0 and WEIGHTS_0); " + format +
+                       " holds none, written without it");
   return left_out;
 }
 
@@ -304,8 +316,11 @@ Mesh read_triangle_mesh(const std::string& path, Read_report* report,
   const std::string extension = lower_extension(path);
   if (extension != ".stl") {
     std::shared_ptr<const tinygltf::Model> gltf_looks;
-    Polygon_soup soup = read_soup(path, extension, gltf_looks);
-    return mesh_of_soup(path, path, soup, std::move(gltf_looks), report, attributes);
+    std::vector<std::string> left_out;
+    Polygon_soup soup = read_soup(path, extension, gltf_looks, left_out);
+    Mesh mesh = mesh_of_soup(path, path, soup, std::move(gltf_looks), report, attributes);
+    if (report) report->left_out = std::move(left_out);
+    return mesh;
   }
   std::vector<Point> points;
   std::vector<Polygon> polygons;
@@ -360,7 +375,8 @@ std::vector<Mesh> read_lod_chain(const std::string& path, Read_report* report,
                                   soups[k].looks, report ? &level_report : nullptr, attributes));
     if (!report) continue;
     if (k == 0) {
-      *report = std::move(level_report);  // its materials are every level's
+      *report = std::move(level_report);     // its materials are every level's
+      report->left_out = soups[k].left_out;  // as are its lines: the file's
       continue;
     }
     for (const std::string& repair : level_report.repairs)

@@ -24,15 +24,17 @@ namespace io {
 // What the faces of a mesh read from an OBJ or glTF file refer to outside it: the material
 // libraries (paths resolved against the folder of the file read), the material names that the
 // face material map (cgal_policies::Corner_attributes) indexes, and from a glTF file its
-// materials themselves, with their textures and images (gltf_io.h), for a glTF output to keep.
+// materials themselves, with their textures and images, and the skeleton of its skin (gltf_io.h),
+// for a glTF output to keep.
 struct Material_references {
   std::vector<std::string> libraries, names;
   std::shared_ptr<const tinygltf::Model> gltf;
 };
 
 struct Read_report {
-  std::vector<std::string> repairs;  // what was repaired, one phrase each; empty when nothing was
-  Material_references materials;     // when the corner attributes were kept
+  std::vector<std::string> repairs;   // what was repaired, one phrase each; empty when nothing was
+  Material_references materials;      // when the corner attributes were kept
+  std::vector<std::string> left_out;  // what the file holds that the mesh does not, a line each
 };
 
 // Whether the reader puts a file's texture coordinates, normals, colours and materials on the mesh

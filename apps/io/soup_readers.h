@@ -10,6 +10,8 @@
 
 #include "Mesh_types.h"
 
+#include <cgal_policies/Corner_attributes.h>
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -22,7 +24,8 @@ namespace io {
 
 // What an OBJ (or PLY) file's corners and faces carry besides their points: its tables of texture
 // coordinates, normals and colours (red, green, blue, alpha in [0, 1]), and of a glTF file's
-// second texture coordinates too, and for each polygon the table entry of each corner (kNoEntry
+// second texture coordinates and skin influences too, and for each polygon the table entry of each
+// corner (kNoEntry
 // where the corner names none; the lists are empty when no corner names one); its material
 // libraries as the file names them, the material names its faces use, and each polygon's material
 // (an index into the names, or kNoMaterial; empty when no face has one).
@@ -33,8 +36,9 @@ struct Corner_tables {
   std::vector<Kernel::Vector_3> normals;
   std::vector<std::array<double, 4>> colors;
   std::vector<std::array<double, 2>> second_uvs;
+  std::vector<Corner_attributes<Point>::Skin_influences> skins;
   std::vector<std::vector<std::size_t>> polygon_uvs, polygon_normals, polygon_colors,
-      polygon_second_uvs;
+      polygon_second_uvs, polygon_skins;
   std::vector<std::string> material_libraries, material_names;
   std::vector<std::uint32_t> polygon_materials;
 };

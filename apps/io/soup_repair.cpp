@@ -39,8 +39,9 @@ std::vector<Polygon> rebuilt(const std::vector<Triangle_source>& sources,
 // The corner tables' per-polygon lists that are not empty follow the triangles of `sources`.
 void rebuild_corner_lists(const std::vector<Triangle_source>& sources, Corner_tables* corners) {
   if (!corners) return;
-  for (std::vector<Polygon>* lists : {&corners->polygon_uvs, &corners->polygon_normals,
-                                      &corners->polygon_colors, &corners->polygon_second_uvs})
+  for (std::vector<Polygon>* lists :
+       {&corners->polygon_uvs, &corners->polygon_normals, &corners->polygon_colors,
+        &corners->polygon_second_uvs, &corners->polygon_skins})
     if (!lists->empty()) *lists = rebuilt(sources, *lists);
   if (corners->polygon_materials.empty()) return;
   std::vector<std::uint32_t> materials;

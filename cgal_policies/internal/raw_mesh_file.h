@@ -20,8 +20,8 @@
 namespace cgal_policies {
 namespace internal {
 
-// Version 2 holds the second set of texture coordinates.
-constexpr std::uint64_t kRawMeshMagic = 0x32485345'4d574152;  // "RAWMESH2"
+// Version 2 holds the second set of texture coordinates, version 3 the skin influences.
+constexpr std::uint64_t kRawMeshMagic = 0x33485345'4d574152;  // "RAWMESH3"
 
 template <class Point>
 void write_raw_mesh(const CGAL::Surface_mesh<Point>& mesh, const std::filesystem::path& path) {
@@ -44,8 +44,8 @@ void write_raw_mesh(const CGAL::Surface_mesh<Point>& mesh, const std::filesystem
   const auto origin = find_vertex_map<Vertex>(mesh, kOriginVertexMap);
   const Corner_attributes<Point> attributes(mesh);
   const auto kinds = attributes.kinds();
-  file.put(std::array<bool, 7>{bool(lock), bool(origin), kinds.uvs, kinds.normals, kinds.colors,
-                               kinds.materials, kinds.second_uvs});
+  file.put(std::array<bool, 8>{bool(lock), bool(origin), kinds.uvs, kinds.normals, kinds.colors,
+                               kinds.materials, kinds.second_uvs, kinds.skins});
   for (const auto v : mesh.vertices()) {
     if (lock) file.put(bool((*lock)[v]));
     if (origin) file.put(std::uint32_t((*origin)[v]));
@@ -58,6 +58,10 @@ void write_raw_mesh(const CGAL::Surface_mesh<Point>& mesh, const std::filesystem
         file.put(std::array<double, 3>{values.normal.x(), values.normal.y(), values.normal.z()});
       if (kinds.colors) file.put(values.color);
       if (kinds.second_uvs) file.put(values.second_uv);
+      if (kinds.skins) {
+        file.put(values.skin.joints);
+        file.put(values.skin.weights);
+      }
     }
   if (kinds.materials)
     for (const auto f : mesh.faces()) file.put((*attributes.materials)[f]);
@@ -105,8 +109,8 @@ CGAL::Surface_mesh<Point> read_raw_mesh(const std::filesystem::path& path) {
   for (const auto f : mesh.faces())
     mesh.set_halfedge(f, Halfedge(checked(file.get<std::uint32_t>(), halfedges, false)));
 
-  const auto [has_lock, has_origin, uvs, normals, colors, materials, second_uvs] =
-      file.get<std::array<bool, 7>>();
+  const auto [has_lock, has_origin, uvs, normals, colors, materials, second_uvs, skins] =
+      file.get<std::array<bool, 8>>();
   std::optional<typename Mesh::template Property_map<Vertex, bool>> lock;
   std::optional<typename Mesh::template Property_map<Vertex, Vertex>> origin;
   if (has_lock) lock = mesh.template add_property_map<Vertex, bool>(kLockedVertexMap, false).first;
@@ -116,7 +120,7 @@ CGAL::Surface_mesh<Point> read_raw_mesh(const std::filesystem::path& path) {
     if (origin) (*origin)[v] = Vertex(file.get<std::uint32_t>());
   }
   const auto attributes =
-      Corner_attributes<Point>::add(mesh, {uvs, normals, colors, materials, second_uvs});
+      Corner_attributes<Point>::add(mesh, {uvs, normals, colors, materials, second_uvs, skins});
   if (attributes.any_corner_values())
     for (const auto h : mesh.halfedges()) {
       auto values = Corner_attributes<Point>::no_values();
@@ -127,6 +131,10 @@ CGAL::Surface_mesh<Point> read_raw_mesh(const std::filesystem::path& path) {
       }
       if (colors) values.color = file.get<typename Corner_attributes<Point>::Color>();
       if (second_uvs) values.second_uv = file.get<typename Corner_attributes<Point>::Uv>();
+      if (skins) {
+        values.skin.joints = file.get<std::array<std::uint16_t, 4>>();
+        values.skin.weights = file.get<std::array<double, 4>>();
+      }
       attributes.set_values(h, values);
     }
   if (materials)

@@ -778,7 +778,7 @@ TEST_F(Cli, SimplifyCarriesTextureCoordinatesIntoAnObjWithEveryKindOfPolicy) {
   // A flat 6 x 6 grid whose texture coordinates are its x and y over 6: a linear field, which
   // every carried collapse reproduces.
   Mesh grid = test_meshes::flat_grid(6);
-  const Attributes painted = Attributes::add(grid, {true, false, false, false, false});
+  const Attributes painted = Attributes::add(grid, {true, false, false, false, false, false});
   for (const auto h : grid.halfedges())
     if (!grid.is_border(h))
       (*painted.uvs)[h] = {grid.point(grid.target(h)).x() / 6, grid.point(grid.target(h)).y() / 6};
@@ -823,7 +823,7 @@ Mesh textured_grid() {
         return std::array<double, 2>{p.x() / 6, p.y() / 6};
       },
       false);
-  const Attributes painted = Attributes::add(grid, {false, false, false, true, false});
+  const Attributes painted = Attributes::add(grid, {false, false, false, true, false, false});
   for (const auto f : grid.faces()) (*painted.materials)[f] = 0;
   return grid;
 }

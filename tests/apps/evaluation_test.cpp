@@ -298,7 +298,8 @@ TEST(AttributeError, SeamsOfCubesWithSixAndWithThreeCharts) {
 TEST(AttributeError, OnlyWhatBothMeshesHaveIsCompared) {
   const Mesh textured = textured_plane(false), bare = flat_grid(4);
   Mesh with_normals = flat_grid(4);
-  const Attributes normals = Attributes::add(with_normals, {false, true, false, false, false});
+  const Attributes normals =
+      Attributes::add(with_normals, {false, true, false, false, false, false});
   for (auto h : halfedges(with_normals))
     if (!with_normals.is_border(h)) (*normals.normals)[h] = Kernel::Vector_3(0, 0, 1);
 

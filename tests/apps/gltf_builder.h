@@ -129,6 +129,52 @@ inline Gltf_builder two_primitive_square() {
   return b;
 }
 
+// A strip of eight triangles, x in [0, 4] and y in [0, 1], skinned by two joints whose weights
+// vary linearly along it, 1 - x / 4 and x / 4 (JOINTS_0 u8, WEIGHTS_0 float, exact in float). Its
+// node (0) is moved by 100 along x, which glTF ignores for a skinned mesh. The joints: "root"
+// (node 1, at the origin, the skin's skeleton and a root of the scene) holds "tip" (node 2,
+// moved by 4 along x); their inverse bind matrices are the identity and a move by -4 along x.
+inline Gltf_builder skinned_strip() {
+  Gltf_builder b;
+  std::vector<float> points, weights;
+  std::vector<std::uint8_t> joints;
+  std::vector<std::uint16_t> indices;
+  for (int x = 0; x <= 4; ++x)
+    for (int y = 0; y <= 1; ++y) {
+      points.insert(points.end(), {float(x), float(y), 0});
+      joints.insert(joints.end(), {0, 1, 0, 0});
+      weights.insert(weights.end(), {1 - float(x) / 4, float(x) / 4, 0, 0});
+    }
+  for (std::uint16_t x = 0; x < 4; ++x) {
+    const std::uint16_t low = std::uint16_t(2 * x), high = std::uint16_t(2 * x + 1);
+    indices.insert(indices.end(), {low, std::uint16_t(low + 2), high, high, std::uint16_t(low + 2),
+                                   std::uint16_t(high + 2)});
+  }
+  tinygltf::Primitive strip = triangles(
+      b.accessor(points, kFloat, TINYGLTF_TYPE_VEC3),
+      b.accessor(indices, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_SCALAR), -1, -1);
+  strip.attributes["JOINTS_0"] =
+      b.accessor(joints, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_TYPE_VEC4);
+  strip.attributes["WEIGHTS_0"] = b.accessor(weights, kFloat, TINYGLTF_TYPE_VEC4);
+  b.place({strip}, {100, 0, 0});
+  b.model.nodes[0].skin = 0;
+  b.model.nodes.resize(3);
+  b.model.nodes[1].name = "root";
+  b.model.nodes[1].children = {2};
+  b.model.nodes[2].name = "tip";
+  b.model.nodes[2].translation = {4, 0, 0};
+  b.model.scenes[0].nodes = {0, 1};
+  tinygltf::Skin skin;
+  skin.joints = {1, 2};
+  skin.skeleton = 1;
+  skin.inverseBindMatrices =
+      b.accessor(std::vector<float>{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0,  0, 0, 1,  // root
+                                    1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -4, 0, 0, 1},
+                 kFloat, TINYGLTF_TYPE_MAT4);
+  b.model.skins.push_back(skin);
+  return b;
+}
+
 // Any bytes: the reader and the writer never decode an image.
 inline const std::string kImageBytes = std::string("\x89PNG\r\n\x1a\n", 8) + "not decoded";
 inline const std::string kJpegBytes = std::string("\xff\xd8\xff\xe0", 4) + "not decoded";

@@ -2098,4 +2098,218 @@ TEST(Gltf, BadMsftLodReferencesAreOneBadInputLine) {
   fs::remove_all(folder);
 }
 
+// ---------------------------------------------------------------------------------------------
+// Skins: JOINTS_0 and WEIGHTS_0 as corner values, the skeleton passed through.
+
+using gltf_fixtures::skinned_strip;
+
+// The weight of `joint` in `skin`: 0 when it has none.
+double weight_of(const Attributes::Skin_influences& skin, std::uint16_t joint) {
+  double weight = 0;
+  for (int i = 0; i < 4; ++i)
+    if (skin.joints[i] == joint) weight += skin.weights[i];
+  return weight;
+}
+
+// Whether every corner of `mesh` has the strip's influences at its point, within `tolerance`:
+// joint 0 weighing 1 - x / 4, joint 1 x / 4, the heavier first.
+void expect_strip_influences(const Mesh& mesh, double tolerance) {
+  const Attributes a(mesh);
+  ASSERT_TRUE(a.skins);
+  for (const auto h : mesh.halfedges()) {
+    if (mesh.is_border(h)) continue;
+    const Attributes::Skin_influences& skin = (*a.skins)[h];
+    const double x = mesh.point(mesh.target(h)).x();
+    EXPECT_NEAR(weight_of(skin, 0), 1 - x / 4, tolerance);
+    EXPECT_NEAR(weight_of(skin, 1), x / 4, tolerance);
+    EXPECT_GE(skin.weights[0], skin.weights[1]);
+    EXPECT_EQ(skin.weights[2] + skin.weights[3], 0);
+  }
+}
+
+// The skinned strip reads where its mesh is, untransformed (glTF ignores the skinned node's move
+// by 100), each corner with its influences exactly. Written in every encoding, the file holds the
+// skeleton: the joints by name with their transforms and hierarchy, the skin with its skeleton and
+// inverse bind matrices, the mesh's node skinned at the scene's root without a transform (its
+// positions stay float when quantized), JOINTS_0 u8 and WEIGHTS_0 float, or normalized u16 when
+// quantized; read back, every influence within a step. A chain of levels of detail skins every
+// level's node. OBJ and PLY hold no skin, which the writer says in one line.
+TEST(Gltf, ASkinnedMeshKeepsItsInfluencesAndItsSkeleton) {
+  const fs::path folder = scratch_folder("gltf_skin");
+  const fs::path in = folder / "strip.gltf";
+  skinned_strip().write(in);
+  apps::Read_report report;
+  const Mesh mesh =
+      apps::read_triangle_mesh(in.string(), &report, apps::Corner_attribute_reading::keep);
+  EXPECT_TRUE(report.left_out.empty());
+  EXPECT_EQ(mesh.number_of_faces(), 8u);
+  for (const auto v : mesh.vertices()) {
+    EXPECT_GE(mesh.point(v).x(), 0);
+    EXPECT_LE(mesh.point(v).x(), 4);
+  }
+  expect_strip_influences(mesh, 0);
+  ASSERT_TRUE(report.materials.gltf);
+  for (const auto& [encoding, weight_type, tolerance] :
+       {std::make_tuple(apps::Gltf_encoding::float32, kFloat, 1e-7),
+        std::make_tuple(apps::Gltf_encoding::quantized, kUnsignedShort, 1.0 / 65535),
+        std::make_tuple(apps::Gltf_encoding::meshopt, kUnsignedShort, 1.0 / 65535)}) {
+    SCOPED_TRACE(int(encoding));
+    const fs::path out = folder / "out.gltf";
+    EXPECT_TRUE(
+        apps::write_mesh_atomically(mesh, out.string(), report.materials, encoding).empty());
+    const nlohmann::json gltf = gltf_json(out);
+    ASSERT_EQ(gltf["skins"].size(), 1u);
+    const nlohmann::json& skin = gltf["skins"][0];
+    ASSERT_EQ(skin["joints"].size(), 2u);
+    const nlohmann::json& root = gltf["nodes"][skin["joints"][0].get<std::size_t>()];
+    const nlohmann::json& tip = gltf["nodes"][skin["joints"][1].get<std::size_t>()];
+    EXPECT_EQ(root["name"], "root");
+    EXPECT_EQ(tip["name"], "tip");
+    EXPECT_EQ(root["children"], nlohmann::json::array({skin["joints"][1]}));
+    EXPECT_EQ(tip["translation"], nlohmann::json::array({4.0, 0.0, 0.0}));
+    EXPECT_EQ(skin["skeleton"], skin["joints"][0]);
+    EXPECT_EQ(gltf["scenes"][0]["nodes"], nlohmann::json::array({0, skin["joints"][0]}));
+    const nlohmann::json& matrices =
+        gltf["accessors"][skin["inverseBindMatrices"].get<std::size_t>()];
+    EXPECT_EQ(matrices["type"], "MAT4");
+    EXPECT_EQ(matrices["count"], 2);
+    const nlohmann::json& node = gltf["nodes"][0];
+    EXPECT_EQ(node["skin"], 0);
+    EXPECT_FALSE(node.contains("translation") || node.contains("scale") || node.contains("matrix"));
+    const nlohmann::json& attributes = gltf["meshes"][0]["primitives"][0]["attributes"];
+    EXPECT_EQ(gltf["accessors"][attributes["POSITION"].get<std::size_t>()]["componentType"],
+              kFloat);
+    EXPECT_EQ(gltf["accessors"][attributes["JOINTS_0"].get<std::size_t>()]["componentType"],
+              kUnsignedByte);
+    const nlohmann::json& weights = gltf["accessors"][attributes["WEIGHTS_0"].get<std::size_t>()];
+    EXPECT_EQ(weights["componentType"], weight_type);
+    EXPECT_EQ(weights.value("normalized", false), weight_type != kFloat);
+    apps::Read_report read_report;
+    const Mesh read =
+        apps::read_triangle_mesh(out.string(), &read_report, apps::Corner_attribute_reading::keep);
+    EXPECT_TRUE(read_report.left_out.empty());
+    EXPECT_EQ(read.number_of_faces(), 8u);
+    expect_strip_influences(read, tolerance);
+    // Two levels, each node skinned by the one skin, read back as two skinned levels.
+    const fs::path chain = folder / "chain.glb";
+    EXPECT_TRUE(apps::write_lod_chain_atomically({{&mesh, 0.5}, {&read, 0}}, chain.string(),
+                                                 report.materials, encoding)
+                    .empty());
+    const nlohmann::json chain_json = gltf_json(chain);
+    EXPECT_EQ(chain_json["nodes"][0]["skin"], 0);
+    EXPECT_EQ(chain_json["nodes"][1]["skin"], 0);
+    const std::vector<Mesh> levels =
+        apps::read_lod_chain(chain.string(), nullptr, apps::Corner_attribute_reading::keep);
+    ASSERT_EQ(levels.size(), 2u);
+    for (const Mesh& level : levels) expect_strip_influences(level, tolerance + 1.0 / 65535);
+  }
+  for (const auto& [extension, format] :
+       {std::make_pair(".obj", "OBJ"), std::make_pair(".ply", "PLY")}) {
+    const fs::path out = folder / (std::string("strip") + extension);
+    EXPECT_EQ(
+        apps::write_mesh_atomically(mesh, out.string()),
+        std::vector<std::string>{out.string() + ": the skin (glTF's JOINTS_0 and WEIGHTS_0); " +
+                                 std::string(format) + " holds none, written without it"});
+  }
+  fs::remove_all(folder);
+}
+
+// More than four influences (JOINTS_1 and WEIGHTS_1) are merged: each vertex keeps its four
+// heaviest joints, ties to the lower joint, renormalised. Normalized u8 weights read as their
+// values.
+TEST(Gltf, MoreThanFourInfluencesKeepTheFourHeaviest) {
+  const fs::path folder = scratch_folder("gltf_skin_eight");
+  Gltf_builder b = skinned_strip();
+  b.model.nodes.resize(7);
+  b.model.nodes[1].children = {2, 3, 4, 5, 6};
+  for (int n = 3; n < 7; ++n) b.model.nodes[std::size_t(n)].name = "joint " + std::to_string(n);
+  b.model.skins[0].joints = {1, 2, 3, 4, 5, 6};
+  b.model.skins[0].inverseBindMatrices = -1;
+  tinygltf::Primitive& strip = b.model.meshes[0].primitives[0];
+  std::vector<std::uint8_t> first_joints, second_joints, first_weights, second_weights;
+  for (int v = 0; v < 10; ++v) {
+    first_joints.insert(first_joints.end(), {0, 1, 2, 3});
+    first_weights.insert(first_weights.end(), {102, 51, 52, 0});  // of 255 in all
+    second_joints.insert(second_joints.end(), {5, 4, 0, 0});
+    second_weights.insert(second_weights.end(), {25, 25, 0, 0});
+  }
+  const auto add = [&b, &strip](const char* name, const std::vector<std::uint8_t>& values,
+                                bool normalized) {
+    strip.attributes[name] = b.accessor(values, kUnsignedByte, TINYGLTF_TYPE_VEC4, normalized);
+  };
+  add("JOINTS_0", first_joints, false);
+  add("WEIGHTS_0", first_weights, true);
+  add("JOINTS_1", second_joints, false);
+  add("WEIGHTS_1", second_weights, true);
+  b.write(folder / "eight.gltf");
+  const Mesh mesh = apps::read_triangle_mesh((folder / "eight.gltf").string(), nullptr,
+                                             apps::Corner_attribute_reading::keep);
+  const Attributes a(mesh);
+  ASSERT_TRUE(a.skins);
+  for (const auto h : mesh.halfedges()) {
+    if (mesh.is_border(h)) continue;
+    // Joints 4 and 5 tie at 25 / 255: 4 is kept, and the four weights' sum of 230 / 255 becomes 1.
+    EXPECT_EQ((*a.skins)[h].joints, (std::array<std::uint16_t, 4>{0, 2, 1, 4}));
+    const std::array<double, 4> expected = {102, 52, 51, 25};
+    for (std::size_t i = 0; i < 4; ++i)
+      EXPECT_NEAR((*a.skins)[h].weights[i], expected[i] / 230, 1e-15);
+  }
+  fs::remove_all(folder);
+}
+
+// A skin the reader cannot carry as one set of influences is left out, in one line, and every mesh
+// is placed by its node's transform, the skinned one's too, as before: meshes with two skins,
+// skinned and unskinned meshes together, a skinned primitive without weights. A joint outside its
+// skin's range is bad input, one line.
+TEST(Gltf, SkinsThatCannotBeCarriedAreLeftOutInOneLine) {
+  const fs::path folder = scratch_folder("gltf_skin_left_out");
+  const fs::path in = folder / "strips.gltf";
+  const auto read = [&in](const Gltf_builder& b, apps::Read_report& report) {
+    b.write(in);
+    return apps::read_triangle_mesh(in.string(), &report, apps::Corner_attribute_reading::keep);
+  };
+  // A second node of the strip, moved by 200.
+  const auto two_strips = [](int second_skin) {
+    Gltf_builder b = skinned_strip();
+    b.model.nodes.emplace_back();
+    b.model.nodes.back().mesh = 0;
+    b.model.nodes.back().skin = second_skin;
+    b.model.nodes.back().translation = {200, 0, 0};
+    b.model.scenes[0].nodes.push_back(3);
+    if (second_skin == 1) b.model.skins.push_back(b.model.skins[0]);
+    return b;
+  };
+  Gltf_builder no_weights = skinned_strip();
+  no_weights.model.meshes[0].primitives[0].attributes.erase("WEIGHTS_0");
+  for (const auto& [b, cause, faces] :
+       {std::make_tuple(two_strips(1), std::string("more than one skin"), 16u),
+        std::make_tuple(two_strips(-1), std::string("skinned and unskinned meshes together"), 16u),
+        std::make_tuple(no_weights, std::string("mesh 0 primitive 0 has no JOINTS_0 and WEIGHTS_0"),
+                        8u)}) {
+    SCOPED_TRACE(cause);
+    apps::Read_report report;
+    const Mesh mesh = read(b, report);
+    EXPECT_EQ(report.left_out,
+              std::vector<std::string>{in.string() + ": the skin is left out (" + cause +
+                                       "); every mesh is placed by its node's transform"});
+    EXPECT_FALSE(Attributes(mesh).skins);
+    EXPECT_EQ(mesh.number_of_faces(), faces);
+    for (const auto v : mesh.vertices()) EXPECT_GE(mesh.point(v).x(), 100);
+  }
+  Gltf_builder far_joint = skinned_strip();
+  far_joint.model.meshes[0].primitives[0].attributes["JOINTS_0"] =
+      far_joint.accessor(std::vector<std::uint8_t>(40, 2), kUnsignedByte, TINYGLTF_TYPE_VEC4);
+  try {
+    apps::Read_report report;
+    read(far_joint, report);
+    ADD_FAILURE() << "read";
+  } catch (const apps::Io_error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              in.string() +
+                  ": mesh 0 primitive 0: joint 2 of vertex 0 is out of range (skin 0 "
+                  "has 2 joints)");
+  }
+  fs::remove_all(folder);
+}
+
 }  // namespace corner_attributes

@@ -2,7 +2,8 @@
 # The ctest test gltf_validator: simplify writes each shipped textured mesh (bob's map_Kd
 # embedded), the vertex-colour PLY and glTF files other tools made (gltfpack, gltf-pipeline's
 # Draco) as .glb and .gltf, bob with its texture missing, then bob with its texture as a data URI,
-# then bob with a second set of texture coordinates (TEXCOORD_1) in each encoding, then bob as a
+# then bob with a second set of texture coordinates (TEXCOORD_1) in each encoding, then bob
+# skinned (JOINTS_0, WEIGHTS_0, three joints) in each encoding, alone and as levels, then bob as a
 # chain of levels of detail (--lod, MSFT_lod), then spot, the vertex-colour PLY and
 # bob's chain in the quantized and meshopt encodings (--gltf-encoding), and the Khronos
 # glTF-Validator (validate_gltf.mjs) must find no error in any of them; its warnings are printed.
@@ -73,6 +74,70 @@ node -e 'const g = JSON.parse(require("fs").readFileSync(process.argv[1]));
     console.error(`${process.argv[1]}: no TEXCOORD_1`);
     process.exit(1);
   }' "$work/bob_lightmap_float.gltf"
+# bob's output skinned: three joints in a chain along x (hip, knee, foot), each vertex weighted by
+# the Bernstein polynomials of its x, under a node moved by 5, which glTF ignores. Simplified in
+# each encoding, as one level and as a chain of levels: each file must hold the skin and its
+# joints, every level's node skinned.
+node -e 'const fs = require("fs"), [gltf, out] = process.argv.slice(1);
+  const g = JSON.parse(fs.readFileSync(gltf));
+  let bytes = Buffer.from(g.buffers[0].uri.split(",")[1], "base64");
+  const append = (data, target) => {
+    bytes = Buffer.concat([bytes, Buffer.alloc((4 - bytes.length % 4) % 4)]);
+    g.bufferViews.push(Object.assign({buffer: 0, byteOffset: bytes.length, byteLength: data.length},
+                                     target ? {target} : {}));
+    bytes = Buffer.concat([bytes, data]);
+    return g.bufferViews.length - 1;
+  };
+  const accessor = (view, componentType, type, count) =>
+    g.accessors.push({bufferView: view, componentType, type, count}) - 1;
+  const positions = g.accessors[g.meshes[0].primitives[0].attributes.POSITION];
+  const low = positions.min[0], length = positions.max[0] - positions.min[0];
+  const view = g.bufferViews[positions.bufferView];
+  const count = positions.count, joints = Buffer.alloc(4 * count), weights = Buffer.alloc(16 * count);
+  for (let v = 0; v < count; ++v) {
+    const at = (view.byteOffset || 0) + (positions.byteOffset || 0) + v * (view.byteStride || 12);
+    const t = (bytes.readFloatLE(at) - low) / length;
+    [0, 1, 2].forEach((j) => joints.writeUInt8(j, 4 * v + j));
+    [(1 - t) * (1 - t), 2 * t * (1 - t), t * t].forEach((w, j) => weights.writeFloatLE(w, 16 * v + 4 * j));
+  }
+  const matrices = Buffer.alloc(3 * 64);
+  [0, 0.5, 1].forEach((along, j) => {
+    [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -(low + along * length), 0, 0, 1].forEach(
+      (c, k) => matrices.writeFloatLE(c, 64 * j + 4 * k));
+  });
+  for (const p of g.meshes[0].primitives) {
+    p.attributes.JOINTS_0 = accessor(append(joints, 34962), 5121, "VEC4", count);
+    p.attributes.WEIGHTS_0 = accessor(append(weights, 34962), 5126, "VEC4", count);
+  }
+  const first = g.nodes.length;
+  g.nodes.push({name: "hip", translation: [low, 0, 0], children: [first + 1]},
+               {name: "knee", translation: [length / 2, 0, 0], children: [first + 2]},
+               {name: "foot", translation: [length / 2, 0, 0]});
+  g.skins = [{joints: [first, first + 1, first + 2], skeleton: first,
+              inverseBindMatrices: accessor(append(matrices, 0), 5126, "MAT4", 3)}];
+  g.nodes[0].skin = 0;
+  g.nodes[0].translation = [5, 0, 0];
+  g.scenes[0].nodes.push(first);
+  g.buffers[0] = {byteLength: bytes.length,
+                  uri: "data:application/octet-stream;base64," + bytes.toString("base64")};
+  fs.writeFileSync(out, JSON.stringify(g));' "$work/bob_tri.gltf" "$work/bob_skinned_input.gltf"
+for encoding in float quantized meshopt; do
+  for extension in glb gltf; do
+    "$simplify" "$work/bob_skinned_input.gltf" "$work/bob_skinned_$encoding.$extension" 0.5 \
+      --quiet --gltf-encoding $encoding
+    "$simplify" "$work/bob_skinned_input.gltf" "$work/bob_skinned_lod_$encoding.$extension" \
+      --lod 0.5,0.25,0.1 --quiet --gltf-encoding $encoding
+    outputs+=("$work/bob_skinned_$encoding.$extension" "$work/bob_skinned_lod_$encoding.$extension")
+  done
+  node -e 'const g = JSON.parse(require("fs").readFileSync(process.argv[1]));
+    const names = (g.nodes || []).map((n) => n.name);
+    const skinned = g.nodes.filter((n) => n.mesh !== undefined).every((n) => n.skin === 0);
+    if (!g.skins || g.skins[0].joints.length !== 3 || !names.includes("knee") || !skinned ||
+        !("JOINTS_0" in g.meshes[0].primitives[0].attributes)) {
+      console.error(`${process.argv[1]}: no skin, no joints, or a mesh node not skinned`);
+      process.exit(1);
+    }' "$work/bob_skinned_lod_$encoding.gltf"
+done
 # A chain of levels of detail in one file (MSFT_lod), textured: bob with its map_Kd embedded; the
 # finest level's node must name the three coarser ones.
 for extension in glb gltf; do

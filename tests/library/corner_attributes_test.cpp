@@ -23,7 +23,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdint>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -112,6 +115,115 @@ TEST(CarriedAttributes, ASeamOfTheSecondUvSetAloneIsKept) {
       const double shift = side(mesh, face(h, mesh));
       EXPECT_NEAR((*attributes.second_uvs)[h][0], p.x() / 10 + shift, 1e-12) << policy;
       EXPECT_NEAR((*attributes.second_uvs)[h][1], p.y() / 10, 1e-12) << policy;
+    }
+  }
+}
+
+// Blending influences: each joint weighs the barycentric sum of its weights at the corners, the
+// four heaviest are kept (ties: the lower joints) and renormalised; a corner without influences
+// makes the blend none. Unused slots are joint 0 with weight 0.
+TEST(SkinInfluences, BlendingKeepsTheFourHeaviestJointsRenormalised) {
+  using Skin = Attributes::Skin_influences;
+  const Skin a{{0, 1, 0, 0}, {0.75, 0.25, 0, 0}}, b{{1, 0, 0, 0}, {1, 0, 0, 0}};
+  const Skin half = Attributes::blend_skins({a, b, b}, {0.5, 0.5, 0});
+  EXPECT_EQ(half.joints, (std::array<std::uint16_t, 4>{1, 0, 0, 0}));
+  EXPECT_EQ(half.weights, (std::array<double, 4>{0.625, 0.375, 0, 0}));
+  // Six joints of equal weight: the four lowest are kept, a quarter each.
+  const Skin c{{5, 1, 0, 0}, {0.5, 0.5, 0, 0}}, d{{4, 2, 0, 0}, {0.5, 0.5, 0, 0}},
+      e{{3, 0, 0, 0}, {0.5, 0.5, 0, 0}};
+  const Skin ties = Attributes::blend_skins({c, d, e}, {1.0 / 3, 1.0 / 3, 1.0 / 3});
+  EXPECT_EQ(ties.joints, (std::array<std::uint16_t, 4>{0, 1, 2, 3}));
+  for (double w : ties.weights) EXPECT_DOUBLE_EQ(w, 0.25);
+  // Five joints: the lightest is dropped and the others renormalised.
+  const Skin f{{0, 1, 2, 3}, {0.4, 0.3, 0.2, 0.1}}, g{{4, 0, 0, 0}, {1, 0, 0, 0}};
+  const Skin five = Attributes::blend_skins({f, g, g}, {0.5, 0.25, 0.25});
+  EXPECT_EQ(five.joints, (std::array<std::uint16_t, 4>{4, 0, 1, 2}));
+  const std::array<double, 4> renormalised = {0.5 / 0.95, 0.2 / 0.95, 0.15 / 0.95, 0.1 / 0.95};
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_DOUBLE_EQ(five.weights[i], renormalised[i]);
+  const Skin none = Attributes::no_values().skin;
+  EXPECT_TRUE(std::isnan(Attributes::blend_skins({a, b, none}, {0.5, 0.5, 0}).weights[0]));
+  // Equal influences are equal values; different ones make a seam as other values do.
+  Attributes::Values x = Attributes::no_values(), y = x;
+  x.skin = y.skin = half;
+  EXPECT_TRUE(Attributes::same_values(x, y));
+  y.skin = a;
+  EXPECT_FALSE(Attributes::same_values(x, y));
+}
+
+// The weight of `joint` in `skin`: 0 when it has none.
+double weight_of(const Attributes::Skin_influences& skin, std::uint16_t joint) {
+  double weight = 0;
+  for (int i = 0; i < 4; ++i)
+    if (skin.joints[i] == joint) weight += skin.weights[i];
+  return weight;
+}
+
+// Skin weights of three joints, 2, 3 and 7, that are linear in the position, with texture
+// coordinates and normals: every policy keeps them linear (no quadric weighs them: they are
+// interpolated), each corner's weights summing to 1 over those joints alone, unused slots joint 0
+// with weight 0.
+TEST(CarriedAttributes, LinearSkinWeightsAreReproducedAndStayNormalised) {
+  const auto weights = [](const Point& p) {
+    return std::array<double, 3>{0.4 - 0.02 * p.y(), 0.6 - 0.05 * p.x(),
+                                 0.05 * p.x() + 0.02 * p.y()};
+  };
+  const std::array<std::uint16_t, 3> joints = {2, 3, 7};
+  for (const std::string& policy : kCarryingPolicies) {
+    Mesh mesh = textured_grid(10, true);
+    paint_skins(mesh, [&](Mesh::Face_index, const Point& p) {
+      const std::array<double, 3> w = weights(p);
+      return Attributes::normalized_skin({{joints[0], w[0]}, {joints[1], w[1]}, {joints[2], w[2]}});
+    });
+    const cgal_policies::Simplification_report outcome = simplify(mesh, policy, 20);
+    EXPECT_TRUE(outcome.attributes_carried) << policy;
+    EXPECT_LT(mesh.number_of_faces(), 200u) << policy;
+    const Attributes attributes(mesh);
+    ASSERT_TRUE(attributes.skins) << policy;
+    for (auto h : halfedges(mesh)) {
+      if (mesh.is_border(h)) continue;
+      const Attributes::Skin_influences& skin = (*attributes.skins)[h];
+      double sum = 0;
+      for (int i = 0; i < 4; ++i) {
+        sum += skin.weights[i];
+        if (skin.weights[i] > 0)
+          EXPECT_TRUE(std::count(joints.begin(), joints.end(), skin.joints[i])) << policy;
+        else
+          EXPECT_EQ(skin.joints[i], 0) << policy;
+      }
+      EXPECT_NEAR(sum, 1, 1e-12) << policy;
+      const std::array<double, 3> expected = weights(mesh.point(target(h, mesh)));
+      for (int k = 0; k < 3; ++k)
+        EXPECT_NEAR(weight_of(skin, joints[std::size_t(k)]), expected[std::size_t(k)], 1e-12)
+            << policy;
+    }
+  }
+}
+
+// Influences that jump across x = 5 (joint 0 alone on the left, joint 1 alone on the right) where
+// every other value agrees: a seam of the skin alone, which every policy keeps, each face's corners
+// the influences of their side.
+TEST(CarriedAttributes, ASeamOfTheSkinAloneIsKept) {
+  const auto side = [](const Mesh& mesh, Mesh::Face_index f) {
+    double x = 0;
+    for (auto v : vertices_around_face(halfedge(f, mesh), mesh)) x += mesh.point(v).x();
+    return x < 15 ? 0 : 1;  // the centroid's x, times 3, against the seam's
+  };
+  for (const std::string& policy : kCarryingPolicies) {
+    Mesh mesh = textured_grid(10, true);
+    paint_skins(mesh, [&](Mesh::Face_index f, const Point&) {
+      return Attributes::Skin_influences{{std::uint16_t(side(mesh, f)), 0, 0, 0}, {1, 0, 0, 0}};
+    });
+    const cgal_policies::Corner_attribute_carrier<Point> before(mesh);
+    for (auto v : vertices(mesh))
+      EXPECT_EQ(before.seam_edges_at(v) > 0, mesh.point(v).x() == 5 || mesh.is_border(v)) << policy;
+    simplify(mesh, policy, 20);
+    const Attributes attributes(mesh);
+    ASSERT_TRUE(attributes.skins) << policy;
+    for (auto h : halfedges(mesh)) {
+      if (mesh.is_border(h)) continue;
+      const Attributes::Skin_influences& skin = (*attributes.skins)[h];
+      EXPECT_EQ(skin.joints[0], side(mesh, face(h, mesh))) << policy;
+      EXPECT_EQ(skin.weights, (std::array<double, 4>{1, 0, 0, 0})) << policy;
     }
   }
 }

@@ -1220,15 +1220,20 @@ Mesh painted_sphere() {
   paint_second_uvs(sphere, [](Mesh::Face_index, const Point& p) {
     return std::array<double, 2>{p.y() / 2 + 0.5, p.x() > 0 ? p.z() : p.z() + 2};
   });
-  const auto materials =
-      cgal_policies::Corner_attributes<Point>::add(sphere, {false, false, false, true, false});
+  const auto materials = cgal_policies::Corner_attributes<Point>::add(
+      sphere, {false, false, false, true, false, false});
   for (const auto f : sphere.faces()) (*materials.materials)[f] = std::uint32_t(f) % 3;
   return sphere;
 }
 
 TEST(PartitionedJob, ReadsAPartBackAsItWasHeld) {
   namespace internal = cgal_policies::internal;
-  const Mesh sphere = painted_sphere();
+  Mesh sphere = painted_sphere();
+  // Skin influences too (RAWMESH3), three joints weighted by the point, with a seam at z = 0.
+  paint_skins(sphere, [](Mesh::Face_index, const Point& p) {
+    return cgal_policies::Corner_attributes<Point>::normalized_skin(
+        {{1, std::abs(p.x()) + 0.1}, {4, std::abs(p.y()) + 0.1}, {9, p.z() > 0 ? 0.5 : 0.2}});
+  });
   const internal::Spatial_cells cells(internal::face_centroids(sphere, 1), 4);
   const Mesh part = internal::mesh_part(sphere, internal::face_cells(sphere, cells, 1), 1);
   const Job_folder folder("raw");
@@ -1238,6 +1243,7 @@ TEST(PartitionedJob, ReadsAPartBackAsItWasHeld) {
   ASSERT_EQ(back.number_of_vertices(), part.number_of_vertices());
   ASSERT_EQ(back.number_of_faces(), part.number_of_faces());
   const cgal_policies::Corner_attributes<Point> was(part), is(back);
+  ASSERT_TRUE(is.skins);
   for (const auto h : part.halfedges()) {
     EXPECT_EQ(back.next(h), part.next(h));
     EXPECT_EQ(back.target(h), part.target(h));

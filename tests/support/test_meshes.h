@@ -177,16 +177,16 @@ void paint_corner_map(Mesh& mesh, const cgal_policies::Corner_attributes<Point>:
 template <class Uv_of>
 void paint_corners(Mesh& mesh, const Uv_of& uv_of, bool with_normals) {
   using Attributes = cgal_policies::Corner_attributes<Point>;
-  paint_corner_map(mesh, {true, false, false, false, false}, &Attributes::uvs, uv_of);
+  paint_corner_map(mesh, {true, false, false, false, false, false}, &Attributes::uvs, uv_of);
   if (with_normals)
-    paint_corner_map(mesh, {false, true, false, false, false}, &Attributes::normals,
+    paint_corner_map(mesh, {false, true, false, false, false, false}, &Attributes::normals,
                      [](Mesh::Face_index, const Point&) { return Kernel::Vector_3(0, 0, 1); });
 }
 
 // Sets every corner's colour from its face and the point of its vertex.
 template <class Color_of>
 void paint_colors(Mesh& mesh, const Color_of& color_of) {
-  paint_corner_map(mesh, {false, false, true, false, false},
+  paint_corner_map(mesh, {false, false, true, false, false, false},
                    &cgal_policies::Corner_attributes<Point>::colors, color_of);
 }
 
@@ -194,8 +194,16 @@ void paint_colors(Mesh& mesh, const Color_of& color_of) {
 // of its vertex.
 template <class Uv_of>
 void paint_second_uvs(Mesh& mesh, const Uv_of& uv_of) {
-  paint_corner_map(mesh, {false, false, false, false, true},
+  paint_corner_map(mesh, {false, false, false, false, true, false},
                    &cgal_policies::Corner_attributes<Point>::second_uvs, uv_of);
+}
+
+// Sets every corner's skin influences (glTF's JOINTS_0 and WEIGHTS_0) from its face and the point
+// of its vertex.
+template <class Skin_of>
+void paint_skins(Mesh& mesh, const Skin_of& skin_of) {
+  paint_corner_map(mesh, {false, false, false, false, false, true},
+                   &cgal_policies::Corner_attributes<Point>::skins, skin_of);
 }
 
 // Twice the signed area of a face's texture triangle.
