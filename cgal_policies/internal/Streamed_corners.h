@@ -43,7 +43,8 @@ typename Corner_attributes<Point>::Kinds corner_kinds_of(const Source& source) {
 template <class Point>
 std::size_t streamed_corner_doubles(const typename Corner_attributes<Point>::Kinds& kinds) {
   const std::size_t corner = (kinds.uvs ? 2 : 0) + (kinds.normals ? 3 : 0) +
-                             (kinds.colors ? 4 : 0) + (kinds.second_uvs ? 2 : 0);
+                             (kinds.colors ? 4 : 0) + (kinds.second_uvs ? 2 : 0) +
+                             (kinds.skins ? 8 : 0);
   return (kinds.materials ? 1 : 0) + 3 * corner;
 }
 
@@ -68,6 +69,13 @@ void for_each_streamed_double(const typename Corner_attributes<Point>::Kinds& ki
       for (double& x : v.color) f(x);
     if (kinds.second_uvs)
       for (double& x : v.second_uv) f(x);
+    if (kinds.skins)
+      for (std::size_t k = 0; k < 4; ++k) {
+        double joint = v.skin.joints[k];
+        f(joint);
+        v.skin.joints[k] = std::uint16_t(joint);
+        f(v.skin.weights[k]);
+      }
   }
 }
 

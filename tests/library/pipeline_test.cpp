@@ -1150,6 +1150,40 @@ TEST(StreamedRun, KeepsWhatAPartitionedRunKeepsOnTheBunny) {
   EXPECT_TRUE(folder.empty());
 }
 
+// A triangle's record in a spill file: every kind of corner value and the material, written and
+// read back exactly, in streamed_corner_doubles() doubles; a kind the source lacks takes no room.
+TEST(StreamedRun, SpillsEveryKindOfCornerValueExactly) {
+  using Attributes = cgal_policies::Corner_attributes<Point>;
+  namespace internal = cgal_policies::internal;
+  internal::Streamed_corners<Point> corners;
+  corners.material = 7;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const double x = 0.1 + double(k);
+    corners.values[k] = {{x, -x},
+                         Attributes::Vector(0, x, 1),
+                         {0.25, 0.5, x / 4, 1},
+                         {2 * x, 3 * x},
+                         {{std::uint16_t(k), 40000, 2, 0}, {0.5, 0.25, 0.25, 0}}};
+  }
+  const Attributes::Kinds all{true, true, true, true, true, true};
+  ASSERT_EQ(internal::streamed_corner_doubles<Point>(all), 1 + 3 * (2 + 3 + 4 + 2 + 8u));
+  std::vector<double> record(internal::streamed_corner_doubles<Point>(all));
+  internal::encode_streamed_corners<Point>(all, corners, record.data());
+  const internal::Streamed_corners<Point> back =
+      internal::decode_streamed_corners<Point>(all, record.data());
+  EXPECT_EQ(back.material, 7u);
+  for (std::size_t k = 0; k < 3; ++k)
+    EXPECT_TRUE(Attributes::same_values(back.values[k], corners.values[k])) << "corner " << k;
+  const Attributes::Kinds uvs_only{true, false, false, false, false, false};
+  EXPECT_EQ(internal::streamed_corner_doubles<Point>(uvs_only), 6u);
+  internal::encode_streamed_corners<Point>(uvs_only, corners, record.data());
+  const internal::Streamed_corners<Point> uvs =
+      internal::decode_streamed_corners<Point>(uvs_only, record.data());
+  EXPECT_EQ(uvs.values[2].uv, corners.values[2].uv);
+  EXPECT_TRUE(std::isnan(uvs.values[2].normal.x()));
+  EXPECT_EQ(uvs.material, Attributes::kNoMaterial);
+}
+
 // A sphere whose texture coordinates are a linear function of the point, with a seam where u jumps
 // by 2, and a material for each side of the seam, streamed in two cells with the fit: the output
 // carries both, each corner's u on its face's side of the seam (no value mixed across it), both
