@@ -296,8 +296,7 @@ int run(int argc, char** argv) {
     run = run_with_bar(options, source.declared_faces(), quiet, [&](const Pipeline& pipeline) {
       return run_out_of_core(pipeline, source, input, mesh);
     });
-    const Streamed_mesh_file::Kinds kinds = source.corner_kinds();
-    input_had_corner_values = kinds.uvs || kinds.normals || kinds.colors;
+    input_had_corner_values = source.has_corner_values();
     read_report.materials = source.materials();
   } else {
     const Stopwatch reading;

@@ -216,6 +216,10 @@ void Streamed_mesh_file::for_each_point(
 
 Streamed_mesh_file::Kinds Streamed_mesh_file::corner_kinds() const { return m_kinds; }
 
+bool Streamed_mesh_file::has_corner_values() const {
+  return m_kinds.uvs || m_kinds.normals || m_kinds.colors;
+}
+
 Material_references Streamed_mesh_file::materials() const {
   Material_references materials;
   const std::filesystem::path folder = std::filesystem::absolute(m_path).parent_path();
@@ -298,6 +302,8 @@ void Streamed_mesh_file::for_each_obj_triangle(const Triangle_function& f) const
   std::size_t points = 0, uvs = 0, normals = 0;
   std::uint32_t material = Corner_attributes<Point>::kNoMaterial;
   std::vector<std::array<std::size_t, 3>> polygon;  // point, uv and normal of each corner
+  Corners corners;
+  corners.values.fill(Corner_attributes<Point>::no_values());
   for_each_obj_line([&](std::size_t number, std::string_view line) {
     std::size_t at = 0;
     const std::string_view keyword = next_token(line, at);
@@ -327,27 +333,24 @@ void Streamed_mesh_file::for_each_obj_triangle(const Triangle_function& f) const
         const std::string_view index = rest.substr(0, slash);
         rest = slash == std::string_view::npos ? std::string_view() : rest.substr(slash + 1);
         if (field > 0 && index.empty()) continue;  // v//vn, or v/vt/
-        long long k = 0;
-        const auto [stop, error] = std::from_chars(index.data(), index.data() + index.size(), k);
-        const long long first = k < 0 ? (long long)(read[field]) + k : k - 1;
-        if (error != std::errc() || stop != index.data() + index.size() || k == 0 || first < 0 ||
-            first >= (long long)(bound[field]))
+        const std::optional<std::size_t> entry = obj_index(index, read[field]);
+        if (!entry || *entry >= bound[field])
           bad(field == 0   ? "names no vertex"
               : field == 1 ? "names a texture coordinate (vt) that is not read before it"
                            : "names a normal (vn) that is not read before it");
-        corner[field] = std::size_t(first);
+        corner[field] = *entry;
       }
       polygon.push_back(corner);
     }
     if (polygon.size() < 3)
       fail(m_path, "line " + std::to_string(number) + ": a face needs at least three corners");
-    Corners corners;
     corners.material = material;
     for (std::size_t k = 2; k < polygon.size(); ++k) {
       const std::array<std::size_t, 3>* fan[3] = {&polygon[0], &polygon[k - 1], &polygon[k]};
-      for (int c = 0; c < 3; ++c)
-        corners.values[std::size_t(c)] =
-            corner_values(std::uint32_t((*fan[c])[0]), (*fan[c])[1], (*fan[c])[2]);
+      if (has_corner_values())
+        for (int c = 0; c < 3; ++c)
+          corners.values[std::size_t(c)] =
+              corner_values(std::uint32_t((*fan[c])[0]), (*fan[c])[1], (*fan[c])[2]);
       f(std::uint32_t(polygon[0][0]), std::uint32_t(polygon[k - 1][0]),
         std::uint32_t(polygon[k][0]), corners);
     }
@@ -415,7 +418,7 @@ void Streamed_mesh_file::for_each_ply_triangle(const Triangle_function& f) const
           fail(m_path, "face " + std::to_string(row) + ": a face needs at least three corners");
         for (std::size_t k = 2; k < polygon.size(); ++k) {
           const std::uint32_t fan[3] = {polygon[0], polygon[k - 1], polygon[k]};
-          if (m_kinds.uvs || m_kinds.normals || m_kinds.colors)  // per vertex
+          if (has_corner_values())  // per vertex
             for (int c = 0; c < 3; ++c)
               corners.values[std::size_t(c)] = corner_values(fan[c], fan[c], fan[c]);
           f(fan[0], fan[1], fan[2], corners);

@@ -46,6 +46,9 @@ class Streamed_mesh_file {
   // After for_each_point: the kinds of values the corners carry, and an OBJ's materials (its
   // libraries resolved against its folder, the names its faces use).
   Kinds corner_kinds() const;
+  // Whether the corners carry values (texture coordinates, normals or colours; a material is the
+  // triangle's), after for_each_point.
+  bool has_corner_values() const;
   Material_references materials() const;
 
   // Calls f(a, b, c, corners) for each triangle, after for_each_point. Throws Io_error on a corner

@@ -164,17 +164,6 @@ constexpr std::size_t kNoEntry = Corner_tables::kNoEntry;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr std::array<double, 4> kNoColor{kNaN, kNaN, kNaN, kNaN};
 
-// An OBJ index: counted from 1, or back from the last of the `so_far` entries read when negative.
-// The entry counted from 0; nothing when it is not a whole number, is 0 or counts back too far.
-std::optional<std::size_t> obj_index(std::string_view token, std::size_t so_far) {
-  const std::optional<long long> index = number_of<long long>(token);
-  if (!index || *index == 0) return std::nullopt;
-  if (*index > 0) return std::size_t(*index - 1);
-  const auto back = std::size_t(-(*index + 1)) + 1;  // no overflow at the lowest long long
-  if (back > so_far) return std::nullopt;
-  return so_far - back;
-}
-
 // A corner of an OBJ face, "v", "v/vt", "v//vn" or "v/vt/vn".
 struct Obj_corner {
   std::size_t point = 0, uv = kNoEntry, normal = kNoEntry;
@@ -244,6 +233,15 @@ void pad_polygon_entries(Entry none, const Polygon_soup& soup,
 }
 
 }  // namespace
+
+std::optional<std::size_t> obj_index(std::string_view token, std::size_t so_far) {
+  const std::optional<long long> index = number_of<long long>(token);
+  if (!index || *index == 0) return std::nullopt;
+  if (*index > 0) return std::size_t(*index - 1);
+  const auto back = std::size_t(-(*index + 1)) + 1;  // no overflow at the lowest long long
+  if (back > so_far) return std::nullopt;
+  return so_far - back;
+}
 
 Polygon_soup parse_obj(const std::string& source, std::string_view bytes) {
   Polygon_soup soup;

@@ -15,6 +15,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -57,6 +58,10 @@ struct Polygon_soup {
 // Io_error (unreadable input, "<source>: line N: <cause>"), or "<source>: face F: <cause>" for an
 // entry that is out of range.
 Polygon_soup parse_obj(const std::string& source, std::string_view bytes);
+
+// An OBJ index: counted from 1, or back from the last of the `so_far` entries read when negative.
+// The entry counted from 0; nothing when it is not a whole number, is 0 or counts back too far.
+std::optional<std::size_t> obj_index(std::string_view token, std::size_t so_far);
 
 // OFF with an optional ST, C or N prefix (texture coordinates, colours and normals are skipped)
 // and # comments. Throws Io_error (unreadable input, "<source>: <cause>").

@@ -79,7 +79,8 @@ class Hausdorff_input_surface {
     if (hint != Reference_sample::kNoTriangle) {
       std::uint32_t at = m_position[hint];  // the walk goes by positions in the hierarchy
       double d2 = squared_distance_to_triangle(p, m_bvh.stored(at));
-      for (std::size_t step = 0; m_tolerance > 0 && step < kWalkSteps; ++step) {
+      const std::size_t steps = m_tolerance > 0 ? kWalkSteps : 0;
+      for (std::size_t step = 0; step < steps; ++step) {
         const std::uint32_t from = at;
         for (const std::uint32_t j : m_neighbours[from]) {
           if (j == kNoNeighbour) continue;

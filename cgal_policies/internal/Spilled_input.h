@@ -41,9 +41,6 @@ class Spilled_input {
     return diagonal_length(CGAL::bbox_3(m_input.points.begin(), m_input.points.end()));
   }
 
-  // The kinds of values the source's corners carry, which every part has.
-  const typename Corner_attributes<Point>::Kinds& corner_kinds() const { return m_input.kinds; }
-
   // The part of cell c (streamed_part()), of the cells spilled here or by spill_shifted().
   CGAL::Surface_mesh<Point> part(const Spill_files& spills, std::size_t c) const {
     return streamed_part(m_input.points, m_vertex_cell, spills.read(c), m_input.kinds);

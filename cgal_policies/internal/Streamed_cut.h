@@ -178,9 +178,9 @@ void add_streamed_corner_values(CGAL::Surface_mesh<Point>& part,
                                 const Spill_files::Cell& cell,
                                 const typename Corner_attributes<Point>::Kinds& kinds) {
   using Attributes = Corner_attributes<Point>;
-  if (streamed_corner_doubles<Point>(kinds) == 0) return;
-  const Attributes attributes = Attributes::add(part, kinds);
   const std::size_t doubles = streamed_corner_doubles<Point>(kinds);
+  if (doubles == 0) return;
+  const Attributes attributes = Attributes::add(part, kinds);
   std::size_t i = 0;
   for (const auto f : part.faces()) {
     const Spill_files::Triangle& t = cell.triangles[i];

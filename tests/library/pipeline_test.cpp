@@ -1023,9 +1023,9 @@ struct Textured_vector_source : Vector_source {
   Attributes::Kinds corner_kinds() const { return {true, false, false, true, false}; }
   template <class F>
   void for_each_triangle(F f) const {
-    if (passes++ == failing_pass) throw std::runtime_error("the source failed");
-    for (std::size_t i = 0; i < triangles.size(); ++i)
-      f(triangles[i][0], triangles[i][1], triangles[i][2], corners[i]);
+    std::size_t i = 0;
+    Vector_source::for_each_triangle(
+        [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) { f(a, b, c, corners[i++]); });
   }
 };
 
