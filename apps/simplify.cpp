@@ -81,8 +81,8 @@ void print_help() {
          "  --parts N             cut IN into N cells (a power of two) simplified at once and\n"
          "                        stitched (docs/scale.md); 0: one per 500,000 faces (default),\n"
          "                        1: none. A bound (--max-error, hausdorff) holds across them\n"
-         "  --threads N           cores for the cells, 0: all (default); the output is the same\n"
-         "                        for every N\n"
+         "  --threads N           cores for the cells and for checking IN as it is read, 0: all\n"
+         "                        (default); the output is the same for every N\n"
          "  --out-of-core         never hold IN whole (binary PLY or OBJ): read it in passes,\n"
          "                        spill each cell's triangles to a temporary file, and\n"
          "                        simplify cell by cell (docs/scale.md); IN's equal points are\n"
@@ -303,7 +303,8 @@ int run(int argc, char** argv) {
     // Only an OBJ, PLY or glTF output can hold texture coordinates, normals and colours.
     mesh = read_triangle_mesh(input, &read_report,
                               writes_corner_attributes(output) ? Corner_attribute_reading::keep
-                                                               : Corner_attribute_reading::drop);
+                                                               : Corner_attribute_reading::drop,
+                              options.threads);
     read_seconds = reading.seconds();
     if (!quiet)
       for (const std::string& repair : read_report.repairs)

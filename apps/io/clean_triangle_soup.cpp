@@ -8,7 +8,8 @@ namespace io {
 bool build_mesh_from_clean_triangles(const std::vector<Point>& points,
                                      const std::vector<std::vector<std::size_t>>& polygons,
                                      Mesh& mesh, std::size_t& unused_points,
-                                     std::vector<Mesh::Vertex_index>* vertex_of_point) {
+                                     std::vector<Mesh::Vertex_index>* vertex_of_point,
+                                     std::size_t threads) {
   mesh.clear();
   // No face left (triangulation drops polygons of fewer than 3 corners): the general path says so.
   if (polygons.empty()) return false;
@@ -18,7 +19,8 @@ bool build_mesh_from_clean_triangles(const std::vector<Point>& points,
     if (polygon.size() != 3) return false;
     corners.insert(corners.end(), polygon.begin(), polygon.end());
   }
-  return internal::build_clean_triangle_mesh(points, corners, mesh, unused_points, vertex_of_point);
+  return internal::build_clean_triangle_mesh(points, corners, mesh, unused_points, vertex_of_point,
+                                             threads);
 }
 
 }  // namespace io

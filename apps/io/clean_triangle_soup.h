@@ -18,10 +18,12 @@ namespace io {
 // Returns false and leaves `mesh` empty when the soup has no polygon or is not such a mesh: it
 // needs repair, or has nothing to build.
 // `vertex_of_point`, when given, gets each point's vertex (a null index for an unused point).
+// The checks around each point run on up to `threads` cores (0: all of them).
 bool build_mesh_from_clean_triangles(const std::vector<Point>& points,
                                      const std::vector<std::vector<std::size_t>>& polygons,
                                      Mesh& mesh, std::size_t& unused_points,
-                                     std::vector<Mesh::Vertex_index>* vertex_of_point = nullptr);
+                                     std::vector<Mesh::Vertex_index>* vertex_of_point = nullptr,
+                                     std::size_t threads = 1);
 
 }  // namespace io
 }  // namespace cgal_policies

@@ -184,14 +184,15 @@ Polygon_soup read_soup(const std::string& path, const std::string& extension,
 // read_triangle_mesh makes it; its errors name `source`.
 Mesh mesh_of_soup(const std::string& path, const std::string& source, Polygon_soup& soup,
                   std::shared_ptr<const tinygltf::Model> gltf_looks, Read_report* report,
-                  Corner_attribute_reading attributes) {
+                  Corner_attribute_reading attributes, std::size_t threads = 1) {
   if (attributes == Corner_attribute_reading::drop)
-    return triangle_mesh_from_soup(source, soup.points, soup.polygons, report);
+    return triangle_mesh_from_soup(source, soup.points, soup.polygons, report, nullptr, threads);
   const Corner_tables& tables = soup.corners;
   if (lower_extension(path) == ".ply" &&
       !(tables.uvs.empty() && tables.normals.empty() && tables.colors.empty()))
     join_equal_points(soup);
-  Mesh mesh = triangle_mesh_from_soup(source, soup.points, soup.polygons, report, &soup.corners);
+  Mesh mesh =
+      triangle_mesh_from_soup(source, soup.points, soup.polygons, report, &soup.corners, threads);
   const Attributes kept(mesh);
   if (report && (kept.materials || kept.skins)) {  // a glTF file's looks hold its skeleton too
     const fs::path folder = fs::absolute(path).parent_path();
@@ -310,7 +311,7 @@ bool has_supported_mesh_extension(const std::string& path) {
 }
 
 Mesh read_triangle_mesh(const std::string& path, Read_report* report,
-                        Corner_attribute_reading attributes) {
+                        Corner_attribute_reading attributes, std::size_t threads) {
   check_readable_file(path);
   check_declared_counts(path);
   const std::string extension = lower_extension(path);
@@ -318,7 +319,7 @@ Mesh read_triangle_mesh(const std::string& path, Read_report* report,
     std::shared_ptr<const tinygltf::Model> gltf_looks;
     std::vector<std::string> left_out;
     Polygon_soup soup = read_soup(path, extension, gltf_looks, left_out);
-    Mesh mesh = mesh_of_soup(path, path, soup, std::move(gltf_looks), report, attributes);
+    Mesh mesh = mesh_of_soup(path, path, soup, std::move(gltf_looks), report, attributes, threads);
     if (report) report->left_out = std::move(left_out);
     return mesh;
   }
@@ -337,7 +338,7 @@ Mesh read_triangle_mesh(const std::string& path, Read_report* report,
 
 Mesh triangle_mesh_from_soup(const std::string& path, std::vector<Point>& points,
                              std::vector<Polygon>& polygons, Read_report* report,
-                             Corner_tables* corners) {
+                             Corner_tables* corners, std::size_t threads) {
   check_soup(path, points, polygons);
   if (!has_corner_attributes(corners)) corners = nullptr;
   Mesh mesh;
@@ -346,7 +347,7 @@ Mesh triangle_mesh_from_soup(const std::string& path, std::vector<Point>& points
   triangulate_polygons(points, polygons, corners, repairs);
   std::vector<Mesh::Vertex_index> vertex_of_point;
   if (build_mesh_from_clean_triangles(points, polygons, mesh, unused_points,
-                                      corners ? &vertex_of_point : nullptr)) {
+                                      corners ? &vertex_of_point : nullptr, threads)) {
     if (unused_points > 0) repairs.push_back(unused_vertices_removed(unused_points));
     if (corners)
       set_corner_attributes(mesh, polygons, *corners, [&](std::size_t p, Mesh::Vertex_index v) {

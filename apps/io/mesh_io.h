@@ -56,8 +56,10 @@ bool is_gltf_file(const std::string& path);
 bool writes_corner_attributes(const std::string& path);
 
 // Reads a triangle mesh; throws Io_error (unreadable input, "<path>: <cause>") when it cannot.
+// Building a clean mesh checks its points on up to `threads` cores (0: all of them).
 Mesh read_triangle_mesh(const std::string& path, Read_report* report = nullptr,
-                        Corner_attribute_reading attributes = Corner_attribute_reading::drop);
+                        Corner_attribute_reading attributes = Corner_attribute_reading::drop,
+                        std::size_t threads = 1);
 
 // The levels of detail of the file at `path`, finest first, each read as read_triangle_mesh reads
 // a mesh: a glTF file's levels (read_gltf_levels, gltf_io.h: its nodes' MSFT_lod, as
@@ -73,10 +75,12 @@ std::vector<Mesh> read_lod_chain(
 // polygons into triangles (soup_repair.h: none is refused for its shape), builds the mesh directly
 // when the triangles are a clean mesh, and otherwise repairs them first. Errors name `source`, as
 // above. The corner attributes of `corners`, when given, go onto the mesh, through the
-// triangulation and the repairs (which is why the soup and its tables change in place).
+// triangulation and the repairs (which is why the soup and its tables change in place). `threads`
+// as read_triangle_mesh's.
 Mesh triangle_mesh_from_soup(const std::string& source, std::vector<Point>& points,
                              std::vector<std::vector<std::size_t>>& polygons,
-                             Read_report* report = nullptr, Corner_tables* corners = nullptr);
+                             Read_report* report = nullptr, Corner_tables* corners = nullptr,
+                             std::size_t threads = 1);
 
 // How a glTF file stores its vertices (gltf_bytes): in float32; quantized to integers
 // (KHR_mesh_quantization); or quantized, then compressed by meshoptimizer

@@ -548,6 +548,7 @@ Polygon_soup parse_ply(const std::string& source, std::string_view bytes) {
       has_points = true;
       soup.points.reserve(element.count);
     }
+    if (is_face) soup.polygons.reserve(soup.polygons.size() + element.count);
     has_faces = has_faces ||
                 ((is_face || is_strip) &&
                  std::any_of(element.properties.begin(), element.properties.end(), is_index_list));

@@ -6,8 +6,11 @@
 #ifndef CGAL_POLICIES_INTERNAL_CLEAN_TRIANGLE_MESH_H
 #define CGAL_POLICIES_INTERNAL_CLEAN_TRIANGLE_MESH_H
 
+#include <cgal_policies/internal/for_each_in_parallel.h>
+
 #include <CGAL/Surface_mesh.h>
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -53,23 +56,28 @@ Sides_by_tail<Index> sides_by_tail(std::size_t point_count,
   return out;
 }
 
+// The points of a soup go to the cores in blocks of this many: a point's work is a few loads.
+constexpr std::size_t kPointsPerTask = std::size_t(1) << 14;
+
 // The side running the other way along each side's edge, or kNone on a border; false when an
-// oriented edge is used twice (which is also how an edge of three or more faces shows).
+// oriented edge is used twice (which is also how an edge of three or more faces shows). Each point
+// sets the twins of the sides leaving it, on up to `threads` cores.
 template <class Index>
 bool find_twins(const std::vector<std::size_t>& corners, const Sides_by_tail<Index>& by_tail,
-                std::vector<Index>& twin) {
+                std::size_t threads, std::vector<Index>& twin) {
   twin.assign(corners.size(), kNone<Index>);
-  for (Index a = 0; a + 1 < by_tail.first.size(); ++a) {
+  std::atomic<bool> used_twice{false};
+  for_each_in_blocks(by_tail.first.size() - 1, kPointsPerTask, threads, [&](std::size_t a) {
     const Index begin = by_tail.first[a], end = by_tail.first[a + 1];
     for (Index i = begin; i < end; ++i) {
       const auto [b, s] = by_tail.leaving[i];
       for (Index j = i + 1; j < end; ++j)
-        if (by_tail.leaving[j].head == b) return false;
+        if (by_tail.leaving[j].head == b) used_twice.store(true, std::memory_order_relaxed);
       for (Index j = by_tail.first[b]; j < by_tail.first[b + 1]; ++j)
         if (by_tail.leaving[j].head == a) twin[s] = by_tail.leaving[j].side;
     }
-  }
-  return true;
+  });
+  return !used_twice;
 }
 
 // Whether the halfedges into v, turning around v from halfedge(v), are all `expected` of them:
@@ -90,7 +98,7 @@ bool is_one_fan(const CGAL::Surface_mesh<Point>& mesh, CGAL::SM_Vertex_index v,
 template <class Index, class Point>
 bool build_with_indices(const std::vector<Point>& points, const std::vector<std::size_t>& corners,
                         CGAL::Surface_mesh<Point>& mesh, std::size_t& unused_points,
-                        std::vector<CGAL::SM_Vertex_index>* vertex_of_point) {
+                        std::vector<CGAL::SM_Vertex_index>* vertex_of_point, std::size_t threads) {
   using Mesh = CGAL::Surface_mesh<Point>;
   using Halfedge = typename Mesh::Halfedge_index;
   using Vertex = typename Mesh::Vertex_index;
@@ -101,7 +109,7 @@ bool build_with_indices(const std::vector<Point>& points, const std::vector<std:
       return false;
   const Sides_by_tail<Index> by_tail = sides_by_tail<Index>(points.size(), corners);
   std::vector<Index> twin;
-  if (!find_twins(corners, by_tail, twin)) return false;
+  if (!find_twins(corners, by_tail, threads, twin)) return false;
 
   std::size_t edge_count = 0;
   for (Index s = 0; s < twin.size(); ++s) edge_count += twin[s] == kNone<Index> || twin[s] > s;
@@ -156,14 +164,17 @@ bool build_with_indices(const std::vector<Point>& points, const std::vector<std:
     mesh.set_next(border, border_leaving[border_head]);
     mesh.set_halfedge(vertex_of[border_head], border);
   }
-  for (std::size_t p = 0; p < points.size(); ++p) {
+  std::atomic<bool> two_fans{false};
+  for_each_in_blocks(points.size(), kPointsPerTask, threads, [&](std::size_t p) {
     const std::size_t faces_around = by_tail.first[p + 1] - by_tail.first[p];
-    if (faces_around == 0) continue;
+    if (faces_around == 0) return;
     const bool on_border = border_leaving[p] != Mesh::null_halfedge();
-    if (!is_one_fan(mesh, vertex_of[p], faces_around + on_border)) {
-      mesh.clear();
-      return false;
-    }
+    if (!is_one_fan(mesh, vertex_of[p], faces_around + on_border))
+      two_fans.store(true, std::memory_order_relaxed);
+  });
+  if (two_fans) {
+    mesh.clear();
+    return false;
   }
   if (vertex_of_point) *vertex_of_point = std::move(vertex_of);
   return true;
@@ -177,18 +188,20 @@ bool build_with_indices(const std::vector<Point>& points, const std::vector<std:
 // builds, its edges numbered as Euler::add_face numbers them, face by face. Points no face uses
 // are left out and counted in `unused_points`; faces, and the used points, keep the soup's order.
 // Returns false and leaves `mesh` empty when the soup is not such a mesh. `vertex_of_point`, when
-// given, gets each point's vertex (a null index for an unused point).
+// given, gets each point's vertex (a null index for an unused point). The checks around each
+// point run on up to `threads` cores (0: all of them); the mesh is the same.
 template <class Point>
 bool build_clean_triangle_mesh(const std::vector<Point>& points,
                                const std::vector<std::size_t>& corners,
                                CGAL::Surface_mesh<Point>& mesh, std::size_t& unused_points,
-                               std::vector<CGAL::SM_Vertex_index>* vertex_of_point = nullptr) {
+                               std::vector<CGAL::SM_Vertex_index>* vertex_of_point = nullptr,
+                               std::size_t threads = 1) {
   constexpr std::size_t kNarrow = clean_triangles::kNone<std::uint32_t>;
   if (points.size() < kNarrow && corners.size() < kNarrow)
     return clean_triangles::build_with_indices<std::uint32_t>(points, corners, mesh, unused_points,
-                                                              vertex_of_point);
+                                                              vertex_of_point, threads);
   return clean_triangles::build_with_indices<std::size_t>(points, corners, mesh, unused_points,
-                                                          vertex_of_point);
+                                                          vertex_of_point, threads);
 }
 
 }  // namespace internal

@@ -732,6 +732,45 @@ TEST(MeshParts, StitchingTheCutPartsGivesTheMeshBack) {
   EXPECT_TRUE(corner_values(whole) == corner_values(sphere));
 }
 
+// The clean mesh's checks around each point, on two cores: the same mesh, halfedge for halfedge,
+// and the same refusals, wherever the offending point falls among the cores' blocks of points.
+TEST(CleanTriangleMesh, TwoCoresBuildAndRefuseAsOne) {
+  namespace internal = cgal_policies::internal;
+  const Mesh grid = flat_grid(150);  // 22,801 points: more than one block
+  std::vector<Point> points(grid.points().begin(), grid.points().end());
+  std::vector<std::size_t> corners;
+  for (const auto f : grid.faces())
+    for (const auto v : CGAL::vertices_around_face(grid.halfedge(f), grid))
+      corners.push_back(std::size_t(v));
+  const auto build = [&](std::size_t threads, Mesh& mesh) {
+    std::size_t unused = 0;
+    return internal::build_clean_triangle_mesh(points, corners, mesh, unused, nullptr, threads);
+  };
+  Mesh one, two;
+  ASSERT_TRUE(build(1, one));
+  ASSERT_TRUE(build(2, two));
+  ASSERT_EQ(two.number_of_halfedges(), one.number_of_halfedges());
+  for (const auto h : one.halfedges()) {
+    EXPECT_EQ(two.target(h), one.target(h));
+    EXPECT_EQ(two.next(h), one.next(h));
+    EXPECT_EQ(two.face(h), one.face(h));
+  }
+  for (const auto v : one.vertices()) EXPECT_EQ(two.halfedge(v), one.halfedge(v));
+
+  // The last face again, the same way round: its oriented edges are used twice.
+  corners.insert(corners.end(), corners.end() - 3, corners.end());
+  EXPECT_FALSE(build(1, one));
+  EXPECT_FALSE(build(2, two));
+  EXPECT_TRUE(two.is_empty());
+  // Instead, a triangle of fresh points touching a point of the last block: it has two fans.
+  corners.resize(corners.size() - 3);
+  for (const double x : {-1.0, -2.0}) points.emplace_back(x, -1, 0);
+  corners.insert(corners.end(), {20000, points.size() - 2, points.size() - 1});
+  EXPECT_FALSE(build(1, one));
+  EXPECT_FALSE(build(2, two));
+  EXPECT_TRUE(two.is_empty());
+}
+
 // A part is asked for twice its share of the target besides its locked vertices: the cut, which
 // the part cannot simplify, must not take the faces its inside needs (the bunny at 1% in four
 // parts had ten times the mean error of the whole run when it did).
