@@ -363,26 +363,28 @@ TEST_F(Cli, ASnapshotThatCannotBeWrittenLeavesNoMeshEither) {
 }
 
 TEST_F(Cli, MaxErrorBoundsEveryEdgeCollapsePolicy) {
-  // A sphere of 1,280 faces: curved everywhere, so the bound must stop every policy early, and
-  // small enough for the sanitized build.
-  const fs::path sphere = write_sphere(file("sphere.off"), 3);
+  // A sphere of 320 faces: curved everywhere, so a bound of 1% of its diagonal stops every policy
+  // early (near 140 faces), and small enough for the sanitized build, where certifying 1,280
+  // faces took a minute a run.
+  const fs::path sphere = write_sphere(file("sphere.off"));
   const fs::path out = file("sphere_out.off");
   for (const char* policy : {"gh", "classic", "curvature"}) {
     const std::string args = sphere.string() + " " + out.string() + " --ratio 0.01 --policy " +
                              policy + " --json --quiet --measure --samples 20000";
-    const Command_result bounded = run("simplify", args + " --max-error 0.002");
+    const Command_result bounded = run("simplify", args + " --max-error 0.01");
     ASSERT_EQ(bounded.exit_code, 0) << policy << ": " << bounded.err;
     EXPECT_NE(bounded.out.find("\"stop_reason\": \"error_bound_reached\""), std::string::npos)
         << policy << ": " << bounded.out;
     EXPECT_NE(bounded.out.find("\"valid\": true"), std::string::npos) << policy;
+    EXPECT_LT(json_number(bounded.out, "output_faces"), 320) << policy << ": nothing collapsed";
     EXPECT_LE(json_number(bounded.out, "hausdorff"),
-              0.002 * json_number(bounded.out, "bbox_diagonal"))
+              0.01 * json_number(bounded.out, "bbox_diagonal"))
         << policy;
     const Command_result free = run("simplify", args);
     ASSERT_EQ(free.exit_code, 0) << policy << ": " << free.err;
     EXPECT_LT(json_number(free.out, "output_faces"), json_number(bounded.out, "output_faces"))
         << policy;
-    EXPECT_GT(json_number(free.out, "hausdorff"), 0.002 * json_number(free.out, "bbox_diagonal"))
+    EXPECT_GT(json_number(free.out, "hausdorff"), 0.01 * json_number(free.out, "bbox_diagonal"))
         << policy << ": the bound must have been needed";
   }
 }
