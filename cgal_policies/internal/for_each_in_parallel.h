@@ -31,6 +31,10 @@ inline std::size_t thread_count(std::size_t threads) {
 
 template <class Body>
 void for_each_in_parallel(std::size_t n, std::size_t threads, const Body& body) {
+  if (threads == 1 || n <= 1) {  // in place: no arena or thread for the calls made on one core
+    for (std::size_t i = 0; i < n; ++i) body(i);
+    return;
+  }
 #ifdef CGAL_POLICIES_WITH_TBB
   tbb::task_arena arena(threads == 0 ? tbb::task_arena::automatic : int(threads));
   arena.execute([&] {

@@ -236,18 +236,6 @@ bool builds(const Polygons& polygons) {
   return builds(polygons, mesh, unused);
 }
 
-// halfedge by halfedge: the same target point, face and next (a Surface_mesh's opposite is fixed).
-void expect_same_connectivity(const Mesh& a, const Mesh& b) {
-  ASSERT_EQ(a.number_of_vertices(), b.number_of_vertices());
-  ASSERT_EQ(a.number_of_halfedges(), b.number_of_halfedges());
-  ASSERT_EQ(a.number_of_faces(), b.number_of_faces());
-  std::size_t differences = 0;
-  for (auto h : a.halfedges())
-    differences += a.point(a.target(h)) != b.point(b.target(h)) || a.face(h) != b.face(h) ||
-                   a.next(h) != b.next(h);
-  EXPECT_EQ(differences, 0u);
-}
-
 Mesh built_by_cgal(const std::vector<Point>& points, const Polygons& polygons) {
   Mesh mesh;
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
@@ -265,7 +253,7 @@ TEST(CleanSoups, AClosedAndAnOpenMeshAreBuiltAsCgalBuildsThem) {
     ASSERT_TRUE(builds(polygons, mesh, unused));
     EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
     EXPECT_TRUE(mesh.is_valid(false));
-    expect_same_connectivity(mesh, built_by_cgal(kPoints, polygons));
+    test_meshes::expect_same_connectivity(mesh, built_by_cgal(kPoints, polygons));
     for (auto v : mesh.vertices())
       EXPECT_EQ(CGAL::is_border(v, mesh).has_value(), mesh.is_border(mesh.halfedge(v)));
   }
@@ -316,7 +304,7 @@ TEST(CleanSoups, ShippedMeshesAreBuiltAsCgalBuildsThem) {
     if (!cgal_takes) continue;
     ++taken;
     EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
-    expect_same_connectivity(mesh, built_by_cgal(points, polygons));
+    test_meshes::expect_same_connectivity(mesh, built_by_cgal(points, polygons));
   }
   EXPECT_GE(taken, 6u);
 }

@@ -749,12 +749,7 @@ TEST(CleanTriangleMesh, TwoCoresBuildAndRefuseAsOne) {
   Mesh one, two;
   ASSERT_TRUE(build(1, one));
   ASSERT_TRUE(build(2, two));
-  ASSERT_EQ(two.number_of_halfedges(), one.number_of_halfedges());
-  for (const auto h : one.halfedges()) {
-    EXPECT_EQ(two.target(h), one.target(h));
-    EXPECT_EQ(two.next(h), one.next(h));
-    EXPECT_EQ(two.face(h), one.face(h));
-  }
+  expect_same_connectivity(two, one);
   for (const auto v : one.vertices()) EXPECT_EQ(two.halfedge(v), one.halfedge(v));
 
   // The last face again, the same way round: its oriented edges are used twice.

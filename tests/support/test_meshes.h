@@ -299,6 +299,19 @@ inline std::size_t degenerate_face_count(const Mesh& mesh) {
   return count;
 }
 
+// The same mesh halfedge by halfedge: the same target point, face and next (a Surface_mesh's
+// opposite is fixed).
+inline void expect_same_connectivity(const Mesh& a, const Mesh& b) {
+  ASSERT_EQ(a.number_of_vertices(), b.number_of_vertices());
+  ASSERT_EQ(a.number_of_halfedges(), b.number_of_halfedges());
+  ASSERT_EQ(a.number_of_faces(), b.number_of_faces());
+  std::size_t differences = 0;
+  for (auto h : a.halfedges())
+    differences += a.point(a.target(h)) != b.point(b.target(h)) || a.face(h) != b.face(h) ||
+                   a.next(h) != b.next(h);
+  EXPECT_EQ(differences, 0u);
+}
+
 // CI's sanitizer pass sets CGAL_POLICIES_SKIP_REAL_MESHES: real meshes, and the few tiny-mesh
 // tests that certify many runs, are many times slower in an instrumented Debug build (minutes
 // each), and the Release pass runs them all.
