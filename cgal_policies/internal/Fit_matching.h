@@ -43,7 +43,9 @@ class Fit_matching {
 
   Fit_matching(std::size_t input_samples, std::size_t output_faces)
       : m_sample_face(input_samples, kFitNoFace),
-        m_face_hint(output_faces, Reference_sample::kNoTriangle) {}
+        m_face_hint(output_faces, Reference_sample::kNoTriangle),
+        m_output_sample_hint(output_faces * kFitOutputLevel * kFitOutputLevel,
+                             Reference_sample::kNoTriangle) {}
 
   // Matches both ways as `mesh` is now (its faces refreshed); returns the two directions' mean
   // distances, averaged.
@@ -116,13 +118,19 @@ class Fit_matching {
     const double total_area = mesh.area();
     if (!(total_area > 0)) return matched;
     seed_face_hints(input.samples());
+    matched.reserve(mesh.face_count() * grid.size());
     for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
       const Indexed_triangle t = mesh.triangle(f);
       const double w = triangle_area(t) / (total_area * double(grid.size()));
-      for (const Eigen::Vector3d& b : grid) {
+      for (std::size_t g = 0; g < grid.size(); ++g) {
+        const Eigen::Vector3d& b = grid[g];
         const Eigen::Vector3d y = b[0] * t.points[0] + b[1] * t.points[1] + b[2] * t.points[2];
-        const Reference_sample near = input.surface().nearest(y, m_face_hint[f]);
-        m_face_hint[f] = near.triangle;
+        // The sample's own match of the last round bounds the search tightly, the vertices having
+        // moved little since; in the first round, the previous sample's of the face.
+        std::size_t& hint = m_output_sample_hint[f * grid.size() + g];
+        const Reference_sample near = input.surface().nearest(
+            y, hint != Reference_sample::kNoTriangle ? hint : m_face_hint[f]);
+        hint = m_face_hint[f] = near.triangle;
         const Triangle_corners& q = input.surface().corners(near.triangle);
         const Eigen::Vector3d c = closest_barycentric(y, q[0], q[1], q[2]);
         matched.push_back({f, b, w, near.distance, c[0] * q[0] + c[1] * q[1] + c[2] * q[2]});
@@ -144,6 +152,7 @@ class Fit_matching {
   std::vector<std::uint32_t> m_sample_face;
   std::vector<Input_match> m_input_matches;
   std::vector<std::size_t> m_face_hint;
+  std::vector<std::size_t> m_output_sample_hint;  // by face, then by sample of the grid
   std::vector<Output_match> m_output_matches;
 };
 

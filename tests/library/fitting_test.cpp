@@ -263,6 +263,29 @@ TEST(FitGuard, RefusesAMoveThroughAnotherFace) {
   EXPECT_TRUE(guard.allows({1}, {above}, {guard.reference(1)}));
 }
 
+// Faces whose boxes only touch go to the exact predicates; faces whose boxes are apart, by however
+// little, do not meet.
+TEST(FacesIntersect, TouchingAtTheBoxesSideMeetsAndJustApartDoesNot) {
+  const Indexed_triangle s = indexed({0, 1, 2}, {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}});
+  const Indexed_triangle touching = indexed({3, 4, 5}, {{{1, 0, 0}, {2, 0, 1}, {2, 1, 0}}});
+  EXPECT_TRUE(faces_intersect(s, touching));
+  EXPECT_TRUE(faces_intersect(touching, s));
+  Indexed_triangle apart = touching;
+  apart.points[0].x() = std::nextafter(1.0, 2.0);
+  EXPECT_FALSE(faces_intersect(s, apart));
+  EXPECT_FALSE(faces_intersect(apart, s));
+  // Boxes that overlap while the faces miss each other: the predicates decide.
+  const Indexed_triangle beside = indexed({3, 4, 5}, {{{0.9, 0.9, -1}, {0.9, 0.9, 1}, {1, 1, 0}}});
+  EXPECT_FALSE(faces_intersect(s, beside));
+  // A common corner: a bow tie meets nowhere else; an edge facing it through the other face does.
+  const Indexed_triangle bow_tie = indexed({0, 7, 8}, {{{0, 0, 0}, {-1, 0, 0}, {0, -1, 0}}});
+  EXPECT_FALSE(faces_intersect(s, bow_tie));
+  const Indexed_triangle piercing =
+      indexed({0, 7, 8}, {{{0, 0, 0}, {0.2, 0.2, -1}, {0.2, 0.2, 1}}});
+  EXPECT_TRUE(faces_intersect(s, piercing));
+  EXPECT_TRUE(faces_intersect(piercing, s));
+}
+
 // Two unit squares 0.1 apart, side by side in z = 0: four border edges each.
 Mesh two_squares() {
   return from_triangles({{0, 0, 0},
