@@ -20,7 +20,7 @@ namespace cgal_policies {
 namespace internal {
 
 // Input samples wanted per output face, up to one per input face (docs/fitting.md).
-constexpr std::size_t kFitSamplesPerFace = 32;
+constexpr std::size_t kFitSamplesPerFace = 16;
 constexpr int kFitMaxInputLevel = 6;
 
 // A point of the input, weighted by the area it stands for (the weights sum to 1).
