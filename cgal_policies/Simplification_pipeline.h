@@ -149,7 +149,7 @@ class Simplification_pipeline {
       // One cell is the whole input: fitted whole, as run() fits a mesh it did not cut.
       if (report.parts == 1)
         return internal::fit_carrying_corner_values(mesh, input.part(input.spills(), 0), fit);
-      const internal::Spatial_cells shifted = input.shifted_cells();
+      const internal::Spatial_cells shifted = input.shifted_cells(m_options.threads);
       std::optional<internal::Spill_files> shifted_spills;
       const auto input_parts = [&](const internal::Spatial_cells& by) {
         const bool first_half = &by == &input.cells();
@@ -211,7 +211,8 @@ class Simplification_pipeline {
       // The input's part of each cell, for the fit's stages: the same cells, then shifted ones.
       const std::vector<Eigen::Vector3d> centroids =
           internal::face_centroids(*input, m_options.threads);
-      const internal::Spatial_cells shifted = internal::shifted_cells(centroids, *cells);
+      const internal::Spatial_cells shifted =
+          internal::shifted_cells(centroids, *cells, m_options.threads);
       job.shifted_cells = shifted.splits();
       for (const int stage : {1, 2}) {
         const std::vector<std::uint32_t> cell =
@@ -257,7 +258,7 @@ class Simplification_pipeline {
       if (not_linked) internal::write_raw_mesh(part, internal::near_part_file(folder, 1, c));
     });
     if (m_options.fit) {
-      const internal::Spatial_cells shifted = input.shifted_cells();
+      const internal::Spatial_cells shifted = input.shifted_cells(m_options.threads);
       job.shifted_cells = shifted.splits();
       std::optional<internal::Spill_files> shifted_spills;
       input.spill_shifted(shifted, shifted_spills);
@@ -512,7 +513,8 @@ class Simplification_pipeline {
   std::optional<internal::Spatial_cells> cells_of(const Mesh& mesh) const {
     const std::size_t count = m_options.cell_count(mesh.number_of_faces());
     if (count <= 1) return std::nullopt;
-    return internal::Spatial_cells(internal::face_centroids(mesh, m_options.threads), count);
+    return internal::Spatial_cells(internal::face_centroids(mesh, m_options.threads), count, 0.5,
+                                   m_options.threads);
   }
 
   template <class Pass>

@@ -5,6 +5,8 @@
 #ifndef CGAL_POLICIES_INTERNAL_SPATIAL_CELLS_H
 #define CGAL_POLICIES_INTERNAL_SPATIAL_CELLS_H
 
+#include <cgal_policies/internal/for_each_in_parallel.h>
+
 #include <Eigen/Core>
 
 #include <algorithm>
@@ -24,14 +26,16 @@ class Spatial_cells {
   };
 
   // `cells` is rounded down to a power of two; 1 when there are fewer centroids than cells. Each
-  // box is split at the `quantile` of its centroids along its longest side (default the median).
-  Spatial_cells(std::vector<Eigen::Vector3d> centroids, std::size_t cells, double quantile = 0.5)
+  // box is split at the `quantile` of its centroids along its longest side (default the median),
+  // the two halves of a large box on two of `threads` cores (0: all), with the same planes.
+  Spatial_cells(std::vector<Eigen::Vector3d> centroids, std::size_t cells, double quantile = 0.5,
+                std::size_t threads = 1)
       : m_quantile(quantile) {
     while ((std::size_t(1) << (m_levels + 1)) <= cells &&
            (std::size_t(1) << (m_levels + 1)) <= centroids.size())
       ++m_levels;
     m_splits.resize((std::size_t(1) << m_levels) - 1);
-    if (m_levels > 0) split(centroids.begin(), centroids.end(), 0, 0);
+    if (m_levels > 0) split(centroids.begin(), centroids.end(), 0, 0, threads);
   }
 
   // The cells of these planes, as splits() gave them (a partitioned job's file).
@@ -55,7 +59,11 @@ class Spatial_cells {
  private:
   using Iterator = std::vector<Eigen::Vector3d>::iterator;
 
-  void split(Iterator begin, Iterator end, std::size_t node, int level) {
+  // Boxes of fewer centroids split both halves on one core: a task would cost more than it saves.
+  static constexpr std::ptrdiff_t kCentroidsPerTask = std::ptrdiff_t(1) << 16;
+
+  // Each half is split on its own (its own nodes and centroids), so the order does not matter.
+  void split(Iterator begin, Iterator end, std::size_t node, int level, std::size_t threads) {
     if (level == m_levels || begin == end) return;  // an empty box keeps a split at 0 on x
     Eigen::Vector3d low = *begin, high = *begin;
     for (Iterator it = begin; it != end; ++it) {
@@ -68,8 +76,12 @@ class Spatial_cells {
     std::nth_element(begin, middle, end,
                      [axis = s.axis](const auto& a, const auto& b) { return a[axis] < b[axis]; });
     s.at = (*middle)[s.axis];
-    split(begin, middle, 2 * node + 1, level + 1);
-    split(middle, end, 2 * node + 2, level + 1);
+    for_each_in_parallel(2, end - begin < kCentroidsPerTask ? 1 : threads, [&](std::size_t half) {
+      if (half == 0)
+        split(begin, middle, 2 * node + 1, level + 1, threads);
+      else
+        split(middle, end, 2 * node + 2, level + 1, threads);
+    });
   }
 
   double m_quantile;

@@ -30,7 +30,7 @@ class Spilled_input {
   template <class Source>
   Spilled_input(const Source& source, const Simplification_options& options)
       : m_input(read_streamed_input<Point>(source)),
-        m_cells(m_input.sample, options.cell_count(m_input.faces)),
+        m_cells(m_input.sample, options.cell_count(m_input.faces), 0.5, options.threads),
         m_spills(m_cells.size(), streamed_corner_doubles<Point>(m_input.kinds)),
         m_vertex_cell(cut_into_spills(source, m_input, m_cells, m_spills)) {}
 
@@ -49,7 +49,9 @@ class Spilled_input {
 
   // The cells of the fit's second half, and the triangles spilled again into them, into files
   // that `to` makes.
-  Spatial_cells shifted_cells() const { return internal::shifted_cells(m_input.sample, m_cells); }
+  Spatial_cells shifted_cells(std::size_t threads) const {
+    return internal::shifted_cells(m_input.sample, m_cells, threads);
+  }
   void spill_shifted(const Spatial_cells& shifted, std::optional<Spill_files>& to) const {
     spill_again(m_input, m_spills, shifted, to.emplace(shifted.size(), m_spills.doubles()));
   }

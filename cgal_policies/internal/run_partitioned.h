@@ -186,10 +186,11 @@ inline int fit_half_rounds(int rounds, int half) {
   return half == 0 ? (rounds + 1) / 2 : rounds - (rounds + 1) / 2;
 }
 
-// The cells of the second half of a fit by cells against an input of these face centroids.
+// The cells of the second half of a fit by cells against an input of these face centroids, split
+// on up to `threads` cores.
 inline Spatial_cells shifted_cells(std::vector<Eigen::Vector3d> centroids,
-                                   const Spatial_cells& cells) {
-  return Spatial_cells(std::move(centroids), cells.size(), kShiftedQuantile);
+                                   const Spatial_cells& cells, std::size_t threads) {
+  return Spatial_cells(std::move(centroids), cells.size(), kShiftedQuantile, threads);
 }
 
 // The fit by cells, in two halves of its rounds: over the run's `cells`, then over `shifted`, cut
@@ -218,7 +219,7 @@ Two_sided_fit_report fit_by_cells(CGAL::Surface_mesh<Point>& mesh,
                                   const Spatial_cells& cells, std::size_t threads,
                                   const Two_sided_fit_options& fit) {
   const std::vector<Eigen::Vector3d> centroids = face_centroids(input, threads);
-  const Spatial_cells shifted = shifted_cells(centroids, cells);
+  const Spatial_cells shifted = shifted_cells(centroids, cells, threads);
   return fit_by_cells(mesh, cells, shifted, threads, fit, [&](const Spatial_cells& by) {
     std::vector<std::uint32_t> cell = face_cells(centroids, by, threads);
     std::vector<std::uint32_t> rank = ranks_in_cells(cell, by.size());

@@ -666,6 +666,23 @@ TEST(SpatialCells, SplitsAtTheMediansOfTheLongestSides) {
   EXPECT_EQ(cgal_policies::internal::Spatial_cells({Eigen::Vector3d(1, 2, 3)}, 4).size(), 1u);
 }
 
+// Two cores split the halves of each large box at once: the same planes as one core, ties
+// included (a grid of points, many on each plane), at both quantiles the runs use.
+TEST(SpatialCells, TwoCoresSplitAsOne) {
+  std::vector<Eigen::Vector3d> points;
+  for (int i = 0; i < 300000; ++i) points.emplace_back(i % 97, (i / 97) % 89, i % 13);
+  for (const double quantile : {0.5, 0.35}) {
+    const cgal_policies::internal::Spatial_cells one(points, 16, quantile, 1);
+    const cgal_policies::internal::Spatial_cells two(points, 16, quantile, 2);
+    ASSERT_EQ(one.splits().size(), 15u);
+    ASSERT_EQ(two.splits().size(), 15u);
+    for (std::size_t n = 0; n < 15; ++n) {
+      EXPECT_EQ(one.splits()[n].axis, two.splits()[n].axis) << n;
+      EXPECT_EQ(one.splits()[n].at, two.splits()[n].at) << n;
+    }
+  }
+}
+
 // The fit by cells reads a cell's triangles from the whole input, where a job reads its part: the
 // same corners, neighbours and order.
 TEST(MeshParts, ACellsTrianglesAreThoseOfItsPart) {
