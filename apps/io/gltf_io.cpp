@@ -19,9 +19,11 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string_view>
@@ -841,6 +843,23 @@ int carried_skin(const std::string& path, const tinygltf::Model& model,
   return -1;
 }
 
+// A line in `left_out` for each mesh placed at some level whose primitives have morph targets:
+// the reader takes the base shape.
+void note_morph_targets(const std::string& path, const tinygltf::Model& model,
+                        const std::vector<std::vector<Placed_mesh>>& levels,
+                        std::vector<std::string>& left_out) {
+  std::set<int> noted;
+  for (const std::vector<Placed_mesh>& placed : levels)
+    for (const Placed_mesh& mesh : placed) {
+      const std::vector<tinygltf::Primitive>& primitives = primitives_of(path, model, mesh.mesh);
+      const bool morphed = std::any_of(primitives.begin(), primitives.end(),
+                                       [](const auto& p) { return !p.targets.empty(); });
+      if (morphed && noted.insert(mesh.mesh).second)
+        left_out.push_back(path + ": mesh " + std::to_string(mesh.mesh) +
+                           ": its morph targets are left out; its base shape is read");
+    }
+}
+
 // The soup of the meshes `placed`; those skinned by `skin` (carried_skin) where they are, as glTF
 // ignores a skinned mesh's node transform, with their influences.
 Polygon_soup soup_of(const std::string& path, const tinygltf::Model& model,
@@ -856,13 +875,164 @@ Polygon_soup soup_of(const std::string& path, const tinygltf::Model& model,
   return std::move(builder).soup();
 }
 
+// Appends `bytes` to buffer 0 as a bufferView of its own, at an offset that is a multiple of 4
+// (glTF aligns every accessor to its component size).
+int append_view(tinygltf::Model& model, const void* bytes, std::size_t size, int target) {
+  std::vector<unsigned char>& data = model.buffers[0].data;
+  data.resize((data.size() + 3) / 4 * 4, 0);
+  tinygltf::BufferView view;
+  view.buffer = 0;
+  view.byteOffset = data.size();
+  view.byteLength = size;
+  view.target = target;
+  const auto* first = static_cast<const unsigned char*>(bytes);
+  data.insert(data.end(), first, first + size);
+  model.bufferViews.push_back(view);
+  return int(model.bufferViews.size() - 1);
+}
+
+int append_accessor(tinygltf::Model& model, int view, std::size_t byte_offset, int component_type,
+                    int type, std::size_t count) {
+  tinygltf::Accessor accessor;
+  accessor.bufferView = view;
+  accessor.byteOffset = byte_offset;
+  accessor.componentType = component_type;
+  accessor.type = type;
+  accessor.count = count;
+  model.accessors.push_back(accessor);
+  return int(model.accessors.size() - 1);
+}
+
+// Appends `values` to `looks` as float elements of `type`, an accessor and a view of their own in
+// buffer 0; with each component's bounds when `bounded` (glTF asks them of an animation's times).
+int keep_floats(tinygltf::Model& looks, const std::vector<double>& values, int type, bool bounded) {
+  if (looks.buffers.empty()) looks.buffers.emplace_back();
+  const std::vector<float> floats(values.begin(), values.end());
+  const std::size_t components = std::size_t(tinygltf::GetNumComponentsInType(std::uint32_t(type)));
+  const int view = append_view(looks, floats.data(), floats.size() * sizeof(float), 0);
+  const int index = append_accessor(looks, view, 0, kFloat, type, floats.size() / components);
+  if (bounded && !floats.empty()) {
+    tinygltf::Accessor& accessor = looks.accessors[std::size_t(index)];
+    accessor.minValues.assign(floats.begin(), floats.begin() + std::ptrdiff_t(components));
+    accessor.maxValues = accessor.minValues;
+    for (std::size_t i = components; i < floats.size(); ++i) {
+      double& low = accessor.minValues[i % components];
+      double& high = accessor.maxValues[i % components];
+      low = (std::min)(low, double(floats[i]));
+      high = (std::max)(high, double(floats[i]));
+    }
+  }
+  return index;
+}
+
+// The times and values of an animation's sampler that moves a node's `target_path` ("rotation",
+// "translation" or "scale"); none for another path, or when glTF's rules for them do not hold
+// (times finite and increasing, as many values as the interpolation needs, all finite), so that no
+// file written from them breaks the rules.
+struct Sampler_values {
+  std::vector<double> times, values;
+};
+
+std::optional<Sampler_values> sampler_values(const std::string& path, const tinygltf::Model& model,
+                                             const tinygltf::AnimationSampler& sampler,
+                                             const std::string& target_path,
+                                             const std::string& what) {
+  const bool rotation = target_path == "rotation";
+  if (!rotation && target_path != "translation" && target_path != "scale") return std::nullopt;
+  Sampler_values read;
+  read.times =
+      accessor_values(path, model, sampler.input,
+                      {TINYGLTF_TYPE_SCALAR, {kFloat}, Integers::not_normalized}, what + " input");
+  // KHR_mesh_quantization allows integers besides floats, normalized for a rotation.
+  const std::vector<int> types = {kFloat, kByte, kUnsignedByte, kShort, kUnsignedShort};
+  read.values =
+      accessor_values(path, model, sampler.output,
+                      rotation ? Accessor_rule{TINYGLTF_TYPE_VEC4, types, Integers::normalized}
+                               : Accessor_rule{TINYGLTF_TYPE_VEC3, types, Integers::either},
+                      what + " output");
+  const std::size_t per_time =
+      (sampler.interpolation == "CUBICSPLINE" ? 3 : 1) * (rotation ? 4 : 3);
+  const auto finite = [](double x) { return std::isfinite(x); };
+  if (read.times.empty() || read.values.size() != per_time * read.times.size() ||
+      !std::all_of(read.times.begin(), read.times.end(), finite) ||
+      !std::all_of(read.values.begin(), read.values.end(), finite) ||
+      std::adjacent_find(read.times.begin(), read.times.end(), std::greater_equal<double>()) !=
+          read.times.end())
+    return std::nullopt;
+  return read;
+}
+
+// The animations' channels that move the kept skeleton's nodes (`index`: an input node's index
+// among them, -1 for the others), with their samplers' times and values (sampler_values) as
+// floats in `looks`, the samplers that share their times sharing one copy. An animation that
+// loses channels (of other nodes, of morph target weights, or breaking glTF's rules) gets a line
+// in `left_out`.
+void keep_animations(const std::string& path, const tinygltf::Model& model,
+                     const std::vector<int>& index, tinygltf::Model& looks,
+                     std::vector<std::string>& left_out) {
+  std::map<int, int> kept_times;  // by the input's accessor
+  for (std::size_t a = 0; a < model.animations.size(); ++a) {
+    const tinygltf::Animation& animation = model.animations[a];
+    const std::string what = "animation " + std::to_string(a);
+    tinygltf::Animation kept;
+    kept.name = animation.name;
+    std::map<std::pair<int, std::string>, int> kept_samplers;  // by input sampler and path
+    std::size_t dropped = 0;
+    for (const tinygltf::AnimationChannel& channel : animation.channels) {
+      const int node = channel.target_node;
+      if (node < 0 || std::size_t(node) >= index.size() || index[std::size_t(node)] < 0) {
+        ++dropped;
+        continue;
+      }
+      if (channel.sampler < 0 || std::size_t(channel.sampler) >= animation.samplers.size())
+        fail(path, what + ": a channel names sampler " + std::to_string(channel.sampler) +
+                       ", which does not exist");
+      const auto key = std::make_pair(channel.sampler, channel.target_path);
+      auto found = kept_samplers.find(key);
+      if (found == kept_samplers.end()) {
+        const tinygltf::AnimationSampler& sampler =
+            animation.samplers[std::size_t(channel.sampler)];
+        const std::optional<Sampler_values> read =
+            sampler_values(path, model, sampler, channel.target_path,
+                           what + " sampler " + std::to_string(channel.sampler));
+        if (!read) {
+          ++dropped;
+          continue;
+        }
+        tinygltf::AnimationSampler& to = kept.samplers.emplace_back();
+        to.interpolation = sampler.interpolation;
+        const auto times = kept_times.emplace(sampler.input, -1).first;
+        if (times->second < 0)
+          times->second = keep_floats(looks, read->times, TINYGLTF_TYPE_SCALAR, true);
+        to.input = times->second;
+        to.output = keep_floats(
+            looks, read->values,
+            channel.target_path == "rotation" ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3, false);
+        found = kept_samplers.emplace(key, int(kept.samplers.size() - 1)).first;
+      }
+      tinygltf::AnimationChannel& to = kept.channels.emplace_back();
+      to.sampler = found->second;
+      to.target_node = index[std::size_t(node)];
+      to.target_path = channel.target_path;
+    }
+    if (dropped > 0)
+      left_out.push_back(
+          path + ": " + what + (animation.name.empty() ? "" : " ('" + animation.name + "')") +
+          ": " + std::to_string(dropped) + " of " + std::to_string(animation.channels.size()) +
+          " channels left out (they move nodes other than the skeleton's, or "
+          "morph target weights, or break glTF's rules)");
+    if (!kept.channels.empty()) looks.animations.push_back(std::move(kept));
+  }
+}
+
 // The nodes skin `skin` needs, with the skin, for a written file to pose the mesh as the input
 // does: its joints and skeleton root and all their ancestors, in the input's order, each with its
 // name, transform and the children among them (no mesh, camera or extension); the skin's joints
-// and skeleton named among them, and its inverse bind matrices (when it has them) as accessor 0, a
-// view and a buffer of MAT4 floats.
+// and skeleton named among them, its inverse bind matrices (when it has them) as MAT4 floats, and
+// the animations of those nodes (keep_animations), each accessor with a view of its own in
+// buffer 0.
 void keep_skeleton(const std::string& path, const tinygltf::Model& model, int skin,
-                   tinygltf::Model& looks) {
+                   tinygltf::Model& looks, std::vector<std::string>& left_out) {
   const tinygltf::Skin& input = model.skins[std::size_t(skin)];
   std::vector<int> parent(model.nodes.size(), -1);
   for (std::size_t n = 0; n < model.nodes.size(); ++n)
@@ -902,6 +1072,7 @@ void keep_skeleton(const std::string& path, const tinygltf::Model& model, int sk
   kept_skin.name = input.name;
   for (int joint : input.joints) kept_skin.joints.push_back(index[std::size_t(joint)]);
   kept_skin.skeleton = input.skeleton >= 0 ? index[std::size_t(input.skeleton)] : -1;
+  keep_animations(path, model, index, looks, left_out);
   if (input.inverseBindMatrices < 0) return;
   const std::vector<double> matrices =
       accessor_values(path, model, input.inverseBindMatrices,
@@ -910,19 +1081,7 @@ void keep_skeleton(const std::string& path, const tinygltf::Model& model, int sk
   if (matrices.size() != 16 * input.joints.size())
     fail(path, "skin " + std::to_string(skin) + ": " + std::to_string(matrices.size() / 16) +
                    " inverse bind matrices for " + std::to_string(input.joints.size()) + " joints");
-  const std::vector<float> floats(matrices.begin(), matrices.end());
-  looks.buffers.emplace_back().data.assign(
-      reinterpret_cast<const unsigned char*>(floats.data()),
-      reinterpret_cast<const unsigned char*>(floats.data() + floats.size()));
-  tinygltf::BufferView& view = looks.bufferViews.emplace_back();
-  view.buffer = 0;
-  view.byteLength = floats.size() * sizeof(float);
-  tinygltf::Accessor& accessor = looks.accessors.emplace_back();
-  accessor.bufferView = 0;
-  accessor.componentType = kFloat;
-  accessor.type = TINYGLTF_TYPE_MAT4;
-  accessor.count = input.joints.size();
-  kept_skin.inverseBindMatrices = 0;
+  kept_skin.inverseBindMatrices = keep_floats(looks, matrices, TINYGLTF_TYPE_MAT4, false);
 }
 
 // read_gltf_levels, or with `follow_lod` false the finest level alone, as read_gltf reads it.
@@ -935,45 +1094,26 @@ std::vector<Gltf_soup> read_levels(const std::string& path, bool binary, bool fo
   for (; walk.level < walk.levels; ++walk.level) placed.push_back(placed_meshes(path, model, walk));
   std::vector<std::string> left_out;
   const int skin = carried_skin(path, model, placed, left_out);
+  note_morph_targets(path, model, placed, left_out);
   std::vector<Gltf_soup> levels;
   for (const std::vector<Placed_mesh>& level : placed)
-    levels.push_back({soup_of(path, model, level, skin), nullptr, left_out});
+    levels.push_back({soup_of(path, model, level, skin), nullptr, {}});
   // Last: the soups above name the materials, which the looks take away.
   std::shared_ptr<tinygltf::Model> looks = kept_looks(model, path);
-  if (skin >= 0) keep_skeleton(path, model, skin, *looks);
-  for (Gltf_soup& level : levels) level.looks = looks;
+  if (skin >= 0)
+    keep_skeleton(path, model, skin, *looks, left_out);
+  else if (!model.animations.empty())
+    left_out.push_back(path + ": its " + std::to_string(model.animations.size()) +
+                       (model.animations.size() == 1 ? " animation is" : " animations are") +
+                       " left out: the meshes are written where their nodes place them");
+  for (Gltf_soup& level : levels) {
+    level.looks = looks;
+    level.left_out = left_out;
+  }
   return levels;
 }
 
 // ---- Writing ---------------------------------------------------------------------------------
-
-// Appends `bytes` to buffer 0 as a bufferView of its own, at an offset that is a multiple of 4
-// (glTF aligns every accessor to its component size).
-int append_view(tinygltf::Model& model, const void* bytes, std::size_t size, int target) {
-  std::vector<unsigned char>& data = model.buffers[0].data;
-  data.resize((data.size() + 3) / 4 * 4, 0);
-  tinygltf::BufferView view;
-  view.buffer = 0;
-  view.byteOffset = data.size();
-  view.byteLength = size;
-  view.target = target;
-  const auto* first = static_cast<const unsigned char*>(bytes);
-  data.insert(data.end(), first, first + size);
-  model.bufferViews.push_back(view);
-  return int(model.bufferViews.size() - 1);
-}
-
-int append_accessor(tinygltf::Model& model, int view, std::size_t byte_offset, int component_type,
-                    int type, std::size_t count) {
-  tinygltf::Accessor accessor;
-  accessor.bufferView = view;
-  accessor.byteOffset = byte_offset;
-  accessor.componentType = component_type;
-  accessor.type = type;
-  accessor.count = count;
-  model.accessors.push_back(accessor);
-  return int(model.accessors.size() - 1);
-}
 
 // A float vertex attribute of every wedge; a value without a number (a corner without one)
 // becomes `none`, as glTF has no "none".
@@ -1285,9 +1425,19 @@ void add_skin_influences(tinygltf::Model& model,
                 : append_float_attribute(model, floats, TINYGLTF_TYPE_VEC4);
 }
 
+// Accessor `index` of `looks` (keep_floats), appended to `model` with a view of its own.
+int append_kept_accessor(tinygltf::Model& model, const tinygltf::Model& looks, int index) {
+  tinygltf::Accessor accessor = looks.accessors[std::size_t(index)];
+  const tinygltf::BufferView& view = looks.bufferViews[std::size_t(accessor.bufferView)];
+  accessor.bufferView =
+      append_view(model, looks.buffers[0].data.data() + view.byteOffset, view.byteLength, 0);
+  model.accessors.push_back(std::move(accessor));
+  return int(model.accessors.size() - 1);
+}
+
 // The skeleton that `looks` kept (keep_skeleton), appended to `model`: its nodes after those
-// `model` has, its skin as `model`'s skin 0, and its inverse bind matrices. Returns the
-// skeleton's roots, for the scene to hold.
+// `model` has, its skin as `model`'s skin 0, its inverse bind matrices and its animations. Returns
+// the skeleton's roots, for the scene to hold.
 std::vector<int> append_skeleton(tinygltf::Model& model, const tinygltf::Model& looks) {
   const int first = int(model.nodes.size());
   std::vector<char> is_child(looks.nodes.size(), 0);
@@ -1301,11 +1451,21 @@ std::vector<int> append_skeleton(tinygltf::Model& model, const tinygltf::Model& 
   tinygltf::Skin skin = looks.skins.front();
   for (int& joint : skin.joints) joint += first;
   if (skin.skeleton >= 0) skin.skeleton += first;
-  if (skin.inverseBindMatrices >= 0) {
-    const std::vector<unsigned char>& matrices = looks.buffers.front().data;
-    const int view = append_view(model, matrices.data(), matrices.size(), 0);
-    skin.inverseBindMatrices =
-        append_accessor(model, view, 0, kFloat, TINYGLTF_TYPE_MAT4, looks.accessors.front().count);
+  // Each accessor once: samplers share their times.
+  std::vector<int> appended(looks.accessors.size(), -1);
+  const auto append = [&](int index) {
+    int& to = appended[std::size_t(index)];
+    if (to < 0) to = append_kept_accessor(model, looks, index);
+    return to;
+  };
+  if (skin.inverseBindMatrices >= 0) skin.inverseBindMatrices = append(skin.inverseBindMatrices);
+  for (tinygltf::Animation animation : looks.animations) {
+    for (tinygltf::AnimationChannel& channel : animation.channels) channel.target_node += first;
+    for (tinygltf::AnimationSampler& sampler : animation.samplers) {
+      sampler.input = append(sampler.input);
+      sampler.output = append(sampler.output);
+    }
+    model.animations.push_back(std::move(animation));
   }
   model.skins.push_back(std::move(skin));
   std::vector<int> roots;

@@ -37,17 +37,23 @@ struct Gltf_soup {
 // its material (names: the material's name, or "material_<i>" when it has none).
 // KHR_mesh_quantization's integer positions, normals and texture coordinates, sparse accessors,
 // EXT_meshopt_compression's views (gltf_meshopt.h) and KHR_draco_mesh_compression's primitives
-// (gltf_draco.h) are read as their values; morph targets and animations are skipped. The
-// points are joined where exactly equal (join_equal_points), so that the vertices a UV seam or a
-// primitive boundary splits become one vertex whose corners disagree.
+// (gltf_draco.h) are read as their values. Morph targets are left out (the base shape is read),
+// a line in `left_out` per mesh that has them. The points are joined where exactly equal
+// (join_equal_points), so that the vertices a UV seam or a primitive boundary splits become one
+// vertex whose corners disagree.
 // Skins: when one skin skins every mesh placed (at every level of detail) and each of their
 // triangle primitives has JOINTS_0 and WEIGHTS_0 (u8 or u16 joints; float, or normalized u8 or
 // u16 weights), the meshes are taken where they are, untransformed, as glTF ignores a skinned
 // mesh's node transform, and each glTF vertex gives the corner tables its skin influences: its
 // four heaviest joints of JOINTS_n/WEIGHTS_n, every set n (more than four influences are merged),
-// renormalised. Otherwise a skin is left out, `left_out` saying why, and every mesh is placed by
-// its node's transform. A joint outside the skin's range, or a skin naming a node that does not
-// exist, is bad input. Throws Io_error (unreadable
+// renormalised; the skeleton's animations come too: each channel that turns, moves or scales
+// one of its nodes, with its sampler's times and values (glTF's types, KHR_mesh_quantization's
+// integers included, read as floats); an animation that loses a channel (of another node, of
+// morph target weights, or whose times do not increase) gets a line in `left_out`. Otherwise a
+// skin is left out, `left_out` saying why, and every mesh is placed by its node's transform; the
+// animations are then left out, in one line. A joint outside the skin's range, a skin naming a
+// node that does not exist, or a channel naming a sampler that does not, is bad input. Throws
+// Io_error (unreadable
 // input, "<path>: <cause>") for a file tinygltf cannot load (malformed JSON or GLB, a buffer file
 // missing), a required extension other than those three and KHR_texture_transform, compressed
 // data that do not decode, an accessor or index out of range, a position, normal, texture

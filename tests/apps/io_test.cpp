@@ -2202,6 +2202,130 @@ TEST(Gltf, ASkinnedMeshKeepsItsInfluencesAndItsSkeleton) {
   fs::remove_all(folder);
 }
 
+// The floats of accessor `index` of the looks a reader kept: each in a view of its own in buffer 0.
+std::vector<float> kept_floats(const tinygltf::Model& looks, int index) {
+  const tinygltf::Accessor& accessor = looks.accessors[std::size_t(index)];
+  const tinygltf::BufferView& view = looks.bufferViews[std::size_t(accessor.bufferView)];
+  std::vector<float> values(view.byteLength / sizeof(float));
+  std::memcpy(values.data(), looks.buffers[0].data.data() + view.byteOffset, view.byteLength);
+  return values;
+}
+
+tinygltf::AnimationSampler animation_sampler(int input, int output, const std::string& kind) {
+  tinygltf::AnimationSampler sampler;
+  sampler.input = input;
+  sampler.output = output;
+  sampler.interpolation = kind;
+  return sampler;
+}
+
+tinygltf::AnimationChannel animation_channel(int sampler, int node, const std::string& path) {
+  tinygltf::AnimationChannel channel;
+  channel.sampler = sampler;
+  channel.target_node = node;
+  channel.target_path = path;
+  return channel;
+}
+
+// A skeleton's animations travel with it: each channel that moves one of its nodes, with its
+// sampler's times (one copy for the samplers that share them, their bounds written, as glTF asks)
+// and values, in every encoding, read back the same. A channel of another node, or whose times do
+// not increase, is left out, one line per animation; an animation left without a channel is not
+// written. Morph targets, and the animations of a file whose meshes are not skinned, are left out
+// with one line each.
+TEST(Gltf, TheSkeletonsAnimationsTravelWithIt) {
+  const fs::path folder = scratch_folder("gltf_animation");
+  const fs::path in = folder / "strip.gltf";
+  Gltf_builder b = skinned_strip();
+  const std::vector<float> turn = {0, 0, 0, 1, 0, 0, 0.6f, 0.8f};
+  const int times = b.accessor(std::vector<float>{0, 1}, kFloat, TINYGLTF_TYPE_SCALAR);
+  const int turns = b.accessor(turn, kFloat, TINYGLTF_TYPE_VEC4);
+  const int moves = b.accessor(std::vector<float>{0, 0, 0, 0, 1, 0}, kFloat, TINYGLTF_TYPE_VEC3);
+  const int stuck = b.accessor(std::vector<float>{0, 0}, kFloat, TINYGLTF_TYPE_SCALAR);
+  tinygltf::Animation bend;
+  bend.name = "bend";
+  bend.samplers = {animation_sampler(times, turns, "LINEAR"),
+                   animation_sampler(times, moves, "STEP"),
+                   animation_sampler(stuck, moves, "LINEAR")};
+  bend.channels = {animation_channel(0, 2, "rotation"), animation_channel(1, 0, "translation"),
+                   animation_channel(2, 1, "translation"), animation_channel(1, 1, "translation")};
+  tinygltf::Animation slide;
+  slide.name = "slide";
+  slide.samplers = {animation_sampler(times, moves, "LINEAR")};
+  slide.channels = {animation_channel(0, 0, "translation")};
+  b.model.animations = {bend, slide};
+  b.write(in);
+  apps::Read_report report;
+  const Mesh mesh =
+      apps::read_triangle_mesh(in.string(), &report, apps::Corner_attribute_reading::keep);
+  const std::string why =
+      " channels left out (they move nodes other than the skeleton's, or morph target weights, or "
+      "break glTF's rules)";
+  EXPECT_EQ(report.left_out,
+            (std::vector<std::string>{in.string() + ": animation 0 ('bend'): 2 of 4" + why,
+                                      in.string() + ": animation 1 ('slide'): 1 of 1" + why}));
+  for (const apps::Gltf_encoding encoding :
+       {apps::Gltf_encoding::float32, apps::Gltf_encoding::quantized,
+        apps::Gltf_encoding::meshopt}) {
+    SCOPED_TRACE(int(encoding));
+    const fs::path out = folder / "out.glb";
+    EXPECT_TRUE(
+        apps::write_mesh_atomically(mesh, out.string(), report.materials, encoding).empty());
+    const nlohmann::json gltf = gltf_json(out);
+    ASSERT_EQ(gltf["animations"].size(), 1u);
+    const nlohmann::json& animation = gltf["animations"][0];
+    EXPECT_EQ(animation["name"], "bend");
+    ASSERT_EQ(animation["channels"].size(), 2u);
+    ASSERT_EQ(animation["samplers"].size(), 2u);
+    const auto node_name = [&](std::size_t channel) {
+      return gltf["nodes"][animation["channels"][channel]["target"]["node"].get<std::size_t>()]
+                 ["name"];
+    };
+    EXPECT_EQ(node_name(0), "tip");
+    EXPECT_EQ(animation["channels"][0]["target"]["path"], "rotation");
+    EXPECT_EQ(node_name(1), "root");
+    EXPECT_EQ(animation["channels"][1]["target"]["path"], "translation");
+    const nlohmann::json& turning = animation["samplers"][0];
+    EXPECT_EQ(turning["interpolation"], "LINEAR");
+    EXPECT_EQ(animation["samplers"][1]["interpolation"], "STEP");
+    // Both samplers read the one copy of their times.
+    EXPECT_EQ(animation["samplers"][1]["input"], turning["input"]);
+    const nlohmann::json& input = gltf["accessors"][turning["input"].get<std::size_t>()];
+    EXPECT_EQ(input["min"], nlohmann::json::array({0.0}));
+    EXPECT_EQ(input["max"], nlohmann::json::array({1.0}));
+    apps::Read_report read_report;
+    apps::read_triangle_mesh(out.string(), &read_report, apps::Corner_attribute_reading::keep);
+    EXPECT_TRUE(read_report.left_out.empty());
+    ASSERT_TRUE(read_report.materials.gltf);
+    const tinygltf::Model& looks = *read_report.materials.gltf;
+    ASSERT_EQ(looks.animations.size(), 1u);
+    ASSERT_EQ(looks.animations[0].samplers.size(), 2u);
+    const tinygltf::AnimationSampler& kept = looks.animations[0].samplers[0];
+    EXPECT_EQ(kept_floats(looks, kept.input), (std::vector<float>{0, 1}));
+    EXPECT_EQ(kept_floats(looks, kept.output), turn);
+    EXPECT_EQ(kept_floats(looks, looks.animations[0].samplers[1].output),
+              (std::vector<float>{0, 0, 0, 0, 1, 0}));
+  }
+  Gltf_builder square = two_primitive_square();
+  square.model.meshes[0].primitives[0].targets = {
+      {{"POSITION", square.accessor(std::vector<float>(9, 0), kFloat, TINYGLTF_TYPE_VEC3)}}};
+  square.model.animations = {slide};
+  square.model.animations[0].samplers[0] = animation_sampler(
+      square.accessor(std::vector<float>{0, 1}, kFloat, TINYGLTF_TYPE_SCALAR),
+      square.accessor(std::vector<float>{0, 0, 0, 0, 1, 0}, kFloat, TINYGLTF_TYPE_VEC3), "LINEAR");
+  const fs::path morphed = folder / "square.gltf";
+  square.write(morphed);
+  apps::Read_report square_report;
+  apps::read_triangle_mesh(morphed.string(), &square_report, apps::Corner_attribute_reading::keep);
+  EXPECT_EQ(
+      square_report.left_out,
+      (std::vector<std::string>{
+          morphed.string() + ": mesh 0: its morph targets are left out; its base shape is read",
+          morphed.string() + ": its 1 animation is left out: the meshes are written where "
+                             "their nodes place them"}));
+  fs::remove_all(folder);
+}
+
 // More than four influences (JOINTS_1 and WEIGHTS_1) are merged: each vertex keeps its four
 // heaviest joints, ties to the lower joint, renormalised. Normalized u8 weights read as their
 // values.

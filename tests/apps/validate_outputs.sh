@@ -3,8 +3,8 @@
 # embedded), the vertex-colour PLY and glTF files other tools made (gltfpack, gltf-pipeline's
 # Draco) as .glb and .gltf, bob with its texture missing, then bob with its texture as a data URI,
 # then bob with a second set of texture coordinates (TEXCOORD_1) in each encoding, then bob
-# skinned (JOINTS_0, WEIGHTS_0, three joints) in each encoding, alone and as levels, then bob as a
-# chain of levels of detail (--lod, MSFT_lod), then spot, the vertex-colour PLY and
+# skinned (JOINTS_0, WEIGHTS_0, three joints, an animation) in each encoding, alone and as levels,
+# then bob as a chain of levels of detail (--lod, MSFT_lod), then spot, the vertex-colour PLY and
 # bob's chain in the quantized and meshopt encodings (--gltf-encoding), and the Khronos
 # glTF-Validator (validate_gltf.mjs) must find no error in any of them; its warnings are printed.
 # Exits 77, which ctest counts as skipped, without node or the validator, and in CI's sanitized
@@ -75,9 +75,9 @@ node -e 'const g = JSON.parse(require("fs").readFileSync(process.argv[1]));
     process.exit(1);
   }' "$work/bob_lightmap_float.gltf"
 # bob's output skinned: three joints in a chain along x (hip, knee, foot), each vertex weighted by
-# the Bernstein polynomials of its x, under a node moved by 5, which glTF ignores. Simplified in
-# each encoding, as one level and as a chain of levels: each file must hold the skin and its
-# joints, every level's node skinned.
+# the Bernstein polynomials of its x, under a node moved by 5, which glTF ignores, and an animation
+# that turns the knee. Simplified in each encoding, as one level and as a chain of levels: each
+# file must hold the skin, its joints and the animation, every level's node skinned.
 node -e 'const fs = require("fs"), [gltf, out] = process.argv.slice(1);
   const g = JSON.parse(fs.readFileSync(gltf));
   let bytes = Buffer.from(g.buffers[0].uri.split(",")[1], "base64");
@@ -117,6 +117,14 @@ node -e 'const fs = require("fs"), [gltf, out] = process.argv.slice(1);
               inverseBindMatrices: accessor(append(matrices, 0), 5126, "MAT4", 3)}];
   g.nodes[0].skin = 0;
   g.nodes[0].translation = [5, 0, 0];
+  const times = Buffer.alloc(8), turn = Buffer.alloc(32);
+  [0, 1].forEach((t, k) => times.writeFloatLE(t, 4 * k));
+  [0, 0, 0, 1, 0, 0, 0.6, 0.8].forEach((c, k) => turn.writeFloatLE(c, 4 * k));
+  const input = g.accessors.push({bufferView: append(times, 0), componentType: 5126, type: "SCALAR",
+                                  count: 2, min: [0], max: [1]}) - 1;
+  const output = accessor(append(turn, 0), 5126, "VEC4", 2);
+  g.animations = [{name: "bend", samplers: [{input, output}],
+                   channels: [{sampler: 0, target: {node: first + 1, path: "rotation"}}]}];
   g.scenes[0].nodes.push(first);
   g.buffers[0] = {byteLength: bytes.length,
                   uri: "data:application/octet-stream;base64," + bytes.toString("base64")};
@@ -132,9 +140,11 @@ for encoding in float quantized meshopt; do
   node -e 'const g = JSON.parse(require("fs").readFileSync(process.argv[1]));
     const names = (g.nodes || []).map((n) => n.name);
     const skinned = g.nodes.filter((n) => n.mesh !== undefined).every((n) => n.skin === 0);
+    const bent = (g.animations || []).length === 1 &&
+                 names[g.animations[0].channels[0].target.node] === "knee";
     if (!g.skins || g.skins[0].joints.length !== 3 || !names.includes("knee") || !skinned ||
-        !("JOINTS_0" in g.meshes[0].primitives[0].attributes)) {
-      console.error(`${process.argv[1]}: no skin, no joints, or a mesh node not skinned`);
+        !("JOINTS_0" in g.meshes[0].primitives[0].attributes) || !bent) {
+      console.error(`${process.argv[1]}: no skin, joints or knee animation, or a node not skinned`);
       process.exit(1);
     }' "$work/bob_skinned_lod_$encoding.gltf"
 done
