@@ -183,6 +183,8 @@ std::vector<Run_record> run_bench(const Bench_plan& plan) {
       input_faces = original.number_of_faces();
       for (const std::string& repair : read_report.repairs)
         std::fprintf(stderr, "simplify_bench: %s: %s\n", bench_mesh.path.c_str(), repair.c_str());
+      for (const std::string& loss : read_report.left_out)
+        std::fprintf(stderr, "simplify_bench: warning: %s\n", loss.c_str());
     }
     const Case_input input{bench_mesh.out_of_core ? nullptr : &original, bench_mesh.path};
     const std::string name = std::filesystem::path(bench_mesh.path).filename().string();

@@ -100,6 +100,9 @@ int run(int argc, char** argv) {
 
   Read_report report;
   std::vector<Mesh> levels = read_lod_chain(args[0], &report, Corner_attribute_reading::keep);
+  // What the file holds that the picture will not show (a morph target, an animation).
+  for (const std::string& loss : report.left_out)
+    std::cerr << "mesh_viewer: warning: " << loss << '\n';
   // Its range is known once MESH is read.
   if (level >= levels.size())
     throw App_error(exit_usage, "--lod-level must be a whole number in [0, " +

@@ -566,7 +566,8 @@ TEST_F(Snapshot, AGltfBaseColourTextureIsDrawnAsTheObjsDiffuseMap) {
 // A base colour texture mesh_viewer cannot draw: a WebP file (stb decodes no WebP), a texture
 // whose image is in KHR_texture_basisu alone (KTX2), an image file that is missing. Each is one
 // warning line naming the file and the material; the picture is that of the file without the
-// texture, in which no pixel has the texture's colours; exit 0.
+// texture, in which no pixel has the texture's colours; exit 0. A morph target, which the reader
+// leaves out, is the reader's one line, and the base shape's picture.
 TEST_F(Snapshot, AGltfTextureThatCannotBeDecodedIsOneWarningAndAnUntexturedPicture) {
   write_textured_square();
   apps::Read_report report;
@@ -593,6 +594,12 @@ TEST_F(Snapshot, AGltfTextureThatCannotBeDecodedIsOneWarningAndAnUntexturedPictu
   write_variant("missing.gltf", [](nlohmann::json& gltf) {
     gltf["images"][0] = {{"uri", "none.png"}};
   });
+  // A morph target (its positions, any accessor will do): the reader's line, the base shape drawn.
+  write_variant("morphed.gltf", [](nlohmann::json& gltf) {
+    gltf["materials"][0]["pbrMetallicRoughness"].erase("baseColorTexture");
+    nlohmann::json& primitive = gltf["meshes"][0]["primitives"][0];
+    primitive["targets"] = {{{"POSITION", primitive["attributes"]["POSITION"]}}};
+  });
 
   const std::string options = " --policy lt --ratio 1 --size 200x100 --snapshot ";
   ASSERT_EQ(run_viewer(path("plain.gltf") + options + path("plain.png")), 0) << output_text();
@@ -617,6 +624,14 @@ TEST_F(Snapshot, AGltfTextureThatCannotBeDecodedIsOneWarningAndAnUntexturedPictu
     ASSERT_EQ(picture.rgb.size(), plain.rgb.size()) << mesh;
     EXPECT_EQ(differing_pixels(picture, plain, 0, 200, 0), 0u) << mesh;
   }
+  ASSERT_EQ(run_viewer(path("morphed.gltf") + options + path("view.png")), 0) << output_text();
+  const std::string morph_line =
+      "mesh_viewer: warning: " + path("morphed.gltf") +
+      ": mesh 0: its morph targets are left out; its base shape is read\n";
+  const std::string output = output_text();
+  EXPECT_EQ(output.rfind(morph_line, 0), 0u) << output;
+  EXPECT_EQ(output.find("warning", morph_line.size()), std::string::npos) << output;
+  EXPECT_EQ(differing_pixels(load_png(path("view.png")), plain, 0, 200, 0), 0u);
 }
 
 // Three spheres of 320, 80 and 20 faces (loop_sphere(2), loop_sphere(1), the icosahedron) written
