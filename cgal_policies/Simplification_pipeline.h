@@ -513,7 +513,7 @@ class Simplification_pipeline {
   std::optional<internal::Spatial_cells> cells_of(const Mesh& mesh) const {
     const std::size_t count = m_options.cell_count(mesh.number_of_faces());
     if (count <= 1) return std::nullopt;
-    return internal::Spatial_cells(internal::face_centroids(mesh, m_options.threads), count, 0.5,
+    return internal::Spatial_cells(internal::face_centroids(mesh, m_options.threads), count,
                                    m_options.threads);
   }
 

@@ -28,8 +28,8 @@ class Spatial_cells {
   // `cells` is rounded down to a power of two; 1 when there are fewer centroids than cells. Each
   // box is split at the `quantile` of its centroids along its longest side (default the median),
   // the two halves of a large box on two of `threads` cores (0: all), with the same planes.
-  Spatial_cells(std::vector<Eigen::Vector3d> centroids, std::size_t cells, double quantile = 0.5,
-                std::size_t threads = 1)
+  Spatial_cells(std::vector<Eigen::Vector3d> centroids, std::size_t cells, std::size_t threads = 1,
+                double quantile = 0.5)
       : m_quantile(quantile) {
     while ((std::size_t(1) << (m_levels + 1)) <= cells &&
            (std::size_t(1) << (m_levels + 1)) <= centroids.size())

@@ -30,7 +30,7 @@ class Spilled_input {
   template <class Source>
   Spilled_input(const Source& source, const Simplification_options& options)
       : m_input(read_streamed_input<Point>(source)),
-        m_cells(m_input.sample, options.cell_count(m_input.faces), 0.5, options.threads),
+        m_cells(m_input.sample, options.cell_count(m_input.faces), options.threads),
         m_spills(m_cells.size(), streamed_corner_doubles<Point>(m_input.kinds)),
         m_vertex_cell(cut_into_spills(source, m_input, m_cells, m_spills)) {}
 

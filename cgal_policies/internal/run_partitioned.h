@@ -190,7 +190,7 @@ inline int fit_half_rounds(int rounds, int half) {
 // on up to `threads` cores.
 inline Spatial_cells shifted_cells(std::vector<Eigen::Vector3d> centroids,
                                    const Spatial_cells& cells, std::size_t threads) {
-  return Spatial_cells(std::move(centroids), cells.size(), kShiftedQuantile, threads);
+  return Spatial_cells(std::move(centroids), cells.size(), threads, kShiftedQuantile);
 }
 
 // The fit by cells, in two halves of its rounds: over the run's `cells`, then over `shifted`, cut

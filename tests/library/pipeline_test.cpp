@@ -672,8 +672,8 @@ TEST(SpatialCells, TwoCoresSplitAsOne) {
   std::vector<Eigen::Vector3d> points;
   for (int i = 0; i < 300000; ++i) points.emplace_back(i % 97, (i / 97) % 89, i % 13);
   for (const double quantile : {0.5, 0.35}) {
-    const cgal_policies::internal::Spatial_cells one(points, 16, quantile, 1);
-    const cgal_policies::internal::Spatial_cells two(points, 16, quantile, 2);
+    const cgal_policies::internal::Spatial_cells one(points, 16, 1, quantile);
+    const cgal_policies::internal::Spatial_cells two(points, 16, 2, quantile);
     ASSERT_EQ(one.splits().size(), 15u);
     ASSERT_EQ(two.splits().size(), 15u);
     for (std::size_t n = 0; n < 15; ++n) {
