@@ -926,9 +926,9 @@ int keep_floats(tinygltf::Model& looks, const std::vector<double>& values, int t
 }
 
 // The times and values of an animation's sampler that moves a node's `target_path` ("rotation",
-// "translation" or "scale"); none for another path, or when glTF's rules for them do not hold
-// (times finite and increasing, as many values as the interpolation needs, all finite), so that no
-// file written from them breaks the rules.
+// "translation" or "scale"); none for another path, or when they cannot be read (an accessor
+// missing or of the wrong type) or break glTF's rules (times finite and increasing, as many values
+// as the interpolation needs, all finite), so that no file written from them breaks the rules.
 struct Sampler_values {
   std::vector<double> times, values;
 };
@@ -940,16 +940,20 @@ std::optional<Sampler_values> sampler_values(const std::string& path, const tiny
   const bool rotation = target_path == "rotation";
   if (!rotation && target_path != "translation" && target_path != "scale") return std::nullopt;
   Sampler_values read;
-  read.times =
-      accessor_values(path, model, sampler.input,
-                      {TINYGLTF_TYPE_SCALAR, {kFloat}, Integers::not_normalized}, what + " input");
   // KHR_mesh_quantization allows integers besides floats, normalized for a rotation.
   const std::vector<int> types = {kFloat, kByte, kUnsignedByte, kShort, kUnsignedShort};
-  read.values =
-      accessor_values(path, model, sampler.output,
-                      rotation ? Accessor_rule{TINYGLTF_TYPE_VEC4, types, Integers::normalized}
-                               : Accessor_rule{TINYGLTF_TYPE_VEC3, types, Integers::either},
-                      what + " output");
+  try {
+    read.times = accessor_values(path, model, sampler.input,
+                                 {TINYGLTF_TYPE_SCALAR, {kFloat}, Integers::not_normalized},
+                                 what + " input");
+    read.values =
+        accessor_values(path, model, sampler.output,
+                        rotation ? Accessor_rule{TINYGLTF_TYPE_VEC4, types, Integers::normalized}
+                                 : Accessor_rule{TINYGLTF_TYPE_VEC3, types, Integers::either},
+                        what + " output");
+  } catch (const Io_error&) {
+    return std::nullopt;  // a motion that cannot be read leaves the mesh readable
+  }
   const std::size_t per_time =
       (sampler.interpolation == "CUBICSPLINE" ? 3 : 1) * (rotation ? 4 : 3);
   const auto finite = [](double x) { return std::isfinite(x); };
@@ -965,8 +969,9 @@ std::optional<Sampler_values> sampler_values(const std::string& path, const tiny
 // The animations' channels that move the kept skeleton's nodes (`index`: an input node's index
 // among them, -1 for the others), with their samplers' times and values (sampler_values) as
 // floats in `looks`, the samplers that share their times sharing one copy. An animation that
-// loses channels (of other nodes, of morph target weights, or breaking glTF's rules) gets a line
-// in `left_out`.
+// loses channels (of other nodes, of morph target weights, without a sampler, or whose sampler
+// cannot be read or breaks glTF's rules) gets a line in `left_out`; none makes the file
+// unreadable.
 void keep_animations(const std::string& path, const tinygltf::Model& model,
                      const std::vector<int>& index, tinygltf::Model& looks,
                      std::vector<std::string>& left_out) {
@@ -980,13 +985,11 @@ void keep_animations(const std::string& path, const tinygltf::Model& model,
     std::size_t dropped = 0;
     for (const tinygltf::AnimationChannel& channel : animation.channels) {
       const int node = channel.target_node;
-      if (node < 0 || std::size_t(node) >= index.size() || index[std::size_t(node)] < 0) {
+      if (node < 0 || std::size_t(node) >= index.size() || index[std::size_t(node)] < 0 ||
+          channel.sampler < 0 || std::size_t(channel.sampler) >= animation.samplers.size()) {
         ++dropped;
         continue;
       }
-      if (channel.sampler < 0 || std::size_t(channel.sampler) >= animation.samplers.size())
-        fail(path, what + ": a channel names sampler " + std::to_string(channel.sampler) +
-                       ", which does not exist");
       const auto key = std::make_pair(channel.sampler, channel.target_path);
       auto found = kept_samplers.find(key);
       if (found == kept_samplers.end()) {

@@ -49,11 +49,11 @@ struct Gltf_soup {
 // renormalised; the skeleton's animations come too: each channel that turns, moves or scales
 // one of its nodes, with its sampler's times and values (glTF's types, KHR_mesh_quantization's
 // integers included, read as floats); an animation that loses a channel (of another node, of
-// morph target weights, or whose times do not increase) gets a line in `left_out`. Otherwise a
-// skin is left out, `left_out` saying why, and every mesh is placed by its node's transform; the
-// animations are then left out, in one line. A joint outside the skin's range, a skin naming a
-// node that does not exist, or a channel naming a sampler that does not, is bad input. Throws
-// Io_error (unreadable
+// morph target weights, without a sampler, or whose sampler cannot be read or whose times do not
+// increase) gets a line in `left_out`. Otherwise a skin is left out, `left_out` saying why, and
+// every mesh is placed by its node's transform; the animations are then left out, in one line. A
+// joint outside the skin's range, or a skin naming a node that does not exist, is bad input.
+// Throws Io_error (unreadable
 // input, "<path>: <cause>") for a file tinygltf cannot load (malformed JSON or GLB, a buffer file
 // missing), a required extension other than those three and KHR_texture_transform, compressed
 // data that do not decode, an accessor or index out of range, a position, normal, texture
