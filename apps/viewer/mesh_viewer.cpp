@@ -100,9 +100,6 @@ int run(int argc, char** argv) {
 
   Read_report report;
   std::vector<Mesh> levels = read_lod_chain(args[0], &report, Corner_attribute_reading::keep);
-  // What the file holds that the picture will not show (a morph target, an animation).
-  for (const std::string& loss : report.left_out)
-    std::cerr << "mesh_viewer: warning: " << loss << '\n';
   // Its range is known once MESH is read.
   if (level >= levels.size())
     throw App_error(exit_usage, "--lod-level must be a whole number in [0, " +
@@ -114,6 +111,10 @@ int run(int argc, char** argv) {
   // corner values: the finest says whether a texture is drawn.
   std::vector<std::string> left_out;
   snapshot.texture = texture_to_draw(levels.front(), report.materials, left_out);
+  // What the picture will not show: what the reader left out (a morph target, an animation),
+  // each line naming MESH already, then a texture it cannot draw.
+  for (const std::string& loss : report.left_out)
+    std::cerr << "mesh_viewer: warning: " << loss << '\n';
   for (const std::string& loss : left_out)
     std::cerr << "mesh_viewer: warning: " << args[0] << ": " << loss << '\n';
   if (png) return write_snapshot_of(levels, level, choice.options, ratio, snapshot, *png);
