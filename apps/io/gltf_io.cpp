@@ -903,6 +903,21 @@ int append_accessor(tinygltf::Model& model, int view, std::size_t byte_offset, i
   return int(model.accessors.size() - 1);
 }
 
+// The bounds of an accessor, which the spec requires of positions and of an animation's times:
+// those of the values it stores, `components` to an element, after one another.
+template <class Value>
+void set_bounds(tinygltf::Accessor& accessor, const std::vector<Value>& values,
+                std::size_t components) {
+  accessor.minValues.assign(components, std::numeric_limits<double>::infinity());
+  accessor.maxValues.assign(components, -std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    double& low = accessor.minValues[i % components];
+    double& high = accessor.maxValues[i % components];
+    low = (std::min)(low, double(values[i]));
+    high = (std::max)(high, double(values[i]));
+  }
+}
+
 // Appends `values` to `looks` as float elements of `type`, an accessor and a view of their own in
 // buffer 0; with each component's bounds when `bounded` (glTF asks them of an animation's times).
 int keep_floats(tinygltf::Model& looks, const std::vector<double>& values, int type, bool bounded) {
@@ -911,17 +926,7 @@ int keep_floats(tinygltf::Model& looks, const std::vector<double>& values, int t
   const std::size_t components = std::size_t(tinygltf::GetNumComponentsInType(std::uint32_t(type)));
   const int view = append_view(looks, floats.data(), floats.size() * sizeof(float), 0);
   const int index = append_accessor(looks, view, 0, kFloat, type, floats.size() / components);
-  if (bounded && !floats.empty()) {
-    tinygltf::Accessor& accessor = looks.accessors[std::size_t(index)];
-    accessor.minValues.assign(floats.begin(), floats.begin() + std::ptrdiff_t(components));
-    accessor.maxValues = accessor.minValues;
-    for (std::size_t i = components; i < floats.size(); ++i) {
-      double& low = accessor.minValues[i % components];
-      double& high = accessor.maxValues[i % components];
-      low = (std::min)(low, double(floats[i]));
-      high = (std::max)(high, double(floats[i]));
-    }
-  }
+  if (bounded) set_bounds(looks.accessors[std::size_t(index)], floats, components);
   return index;
 }
 
@@ -1189,18 +1194,6 @@ Integer normalized_integer(double value, double none) {
   return Integer(std::lround(v * largest));
 }
 
-// The bounds of an accessor of positions, which the spec requires: those of the values it stores,
-// x, y, z after one another.
-template <class Value>
-void set_bounds(tinygltf::Accessor& accessor, const std::vector<Value>& values) {
-  accessor.minValues.assign(3, std::numeric_limits<double>::infinity());
-  accessor.maxValues.assign(3, -std::numeric_limits<double>::infinity());
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    accessor.minValues[i % 3] = std::min(accessor.minValues[i % 3], double(values[i]));
-    accessor.maxValues[i % 3] = std::max(accessor.maxValues[i % 3], double(values[i]));
-  }
-}
-
 // KHR_mesh_quantization's positions: unsigned 16-bit steps from `origin` along each axis, the
 // step the same on every axis, so that the node's scale, which dequantizes them, is uniform and
 // leaves the normals' directions as they are.
@@ -1226,7 +1219,7 @@ int append_quantized_positions(tinygltf::Model& model, const std::vector<Point>&
       steps.push_back(std::uint16_t(
           std::min(65535.0, std::round((p[axis] - grid.origin[std::size_t(axis)]) / grid.step))));
   const int position = append_integer_attribute(model, steps, TINYGLTF_TYPE_VEC3, false);
-  set_bounds(model.accessors[std::size_t(position)], steps);
+  set_bounds(model.accessors[std::size_t(position)], steps, 3);
   return position;
 }
 
@@ -1235,7 +1228,7 @@ int append_float_positions(tinygltf::Model& model, const std::vector<Point>& poi
   for (const Point& p : points)
     for (double c : {p.x(), p.y(), p.z()}) positions.push_back(float(c));
   const int position = append_float_attribute(model, positions, TINYGLTF_TYPE_VEC3);
-  set_bounds(model.accessors[std::size_t(position)], positions);
+  set_bounds(model.accessors[std::size_t(position)], positions, 3);
   return position;
 }
 

@@ -30,24 +30,20 @@ inline bool faces_intersect(const Indexed_triangle& s, const Indexed_triangle& t
         ++shared;
       }
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-  const auto point = [](const Eigen::Vector3d& p) { return K::Point_3(p.x(), p.y(), p.z()); };
-  std::array<K::Point_3, 3> a, b;
-  for (int k = 0; k < 3; ++k) {
-    a[k] = point(s.points[k]);
-    b[k] = point(t.points[k]);
-  }
+  const auto triangle = [](const Indexed_triangle& f) {
+    const auto point = [&](int k) {
+      return K::Point_3(f.points[k].x(), f.points[k].y(), f.points[k].z());
+    };
+    return K::Triangle_3(point(0), point(1), point(2));
+  };
+  const K::Triangle_3 a = triangle(s), b = triangle(t);
   // Boxes compare the coordinates exactly: what lies in boxes apart cannot meet. Most pairs the
   // guard's grid offers are such, and skip the predicates.
-  const CGAL::Bbox_3 box_a = a[0].bbox() + a[1].bbox() + a[2].bbox();
-  const CGAL::Bbox_3 box_b = b[0].bbox() + b[1].bbox() + b[2].bbox();
+  const CGAL::Bbox_3 box_a = a.bbox(), box_b = b.bbox();
   if (shared == 3 || !CGAL::do_overlap(box_a, box_b)) return false;
   // Degenerate faces have no orientation to test against; the guard keeps new faces proper.
-  const auto proper = [&] {
-    return !CGAL::collinear(a[0], a[1], a[2]) && !CGAL::collinear(b[0], b[1], b[2]);
-  };
-  if (shared == 0)
-    return proper() &&
-           CGAL::do_intersect(K::Triangle_3(a[0], a[1], a[2]), K::Triangle_3(b[0], b[1], b[2]));
+  const auto proper = [&] { return !a.is_degenerate() && !b.is_degenerate(); };
+  if (shared == 0) return proper() && CGAL::do_intersect(a, b);
   if (shared == 2) {  // a common edge: they meet elsewhere only folded flat onto each other
     int i = 0;
     while (in_t[i] != -1) ++i;
@@ -67,8 +63,8 @@ inline bool faces_intersect(const Indexed_triangle& s, const Indexed_triangle& t
   const bool s_near = CGAL::do_overlap(facing_s.bbox(), box_b);
   const bool t_near = CGAL::do_overlap(facing_t.bbox(), box_a);
   return (s_near || t_near) && proper() &&
-         ((s_near && CGAL::do_intersect(facing_s, K::Triangle_3(b[0], b[1], b[2]))) ||
-          (t_near && CGAL::do_intersect(facing_t, K::Triangle_3(a[0], a[1], a[2]))));
+         ((s_near && CGAL::do_intersect(facing_s, b)) ||
+          (t_near && CGAL::do_intersect(facing_t, a)));
 }
 
 }  // namespace internal
