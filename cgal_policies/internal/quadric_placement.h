@@ -34,12 +34,20 @@ inline double squared_distance_to_segment(const Eigen::Vector3d& x, const Eigen:
   return (x - (p0 + t * d)).squaredNorm();
 }
 
-// a is PSD, so lambda_min >= det / lambda_max^2 and lambda_max <= trace: det / trace^3 above the
-// bound settles it without the eigen solver, which only near-singular (flat) quadrics need.
+// a is PSD with eigenvalues l0 <= l1 <= l2, so l2 lies in [trace / 3, trace], l1 l2 in [e2 / 3, e2]
+// (e2 = l0 l1 + l0 l2 + l1 l2, the sum of the principal 2x2 minors), l1 <= 3 e2 / trace and l0
+// = det / (l1 l2) in [det / e2, 3 det / e2]. These bounds settle the test, outside a band around
+// the limit, without the eigen solver: most quadrics of a dense scan are nearly flat (tiny e2).
 inline bool is_well_conditioned(const Eigen::Matrix3d& a) {
   const double trace = a.trace();
   if (!(trace > 0)) return false;
-  if (a.determinant() > kMinimumConditioning * trace * trace * trace) return true;
+  const double det = a.determinant();
+  if (det > kMinimumConditioning * trace * trace * trace) return true;
+  const double e2 = a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0) + a(0, 0) * a(2, 2) - a(0, 2) * a(2, 0) +
+                    a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1);
+  const double below_limit = kMinimumConditioning * trace / 3;  // at most the limit, k l2
+  if (3 * e2 / trace <= below_limit || 3 * det / e2 <= below_limit) return false;
+  if (det / e2 > kMinimumConditioning * trace) return true;  // l0 above k trace, so above k l2
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
   eigen.computeDirect(a, Eigen::EigenvaluesOnly);
   const double largest = eigen.eigenvalues()(2);

@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <random>
 
 namespace {
 
@@ -190,6 +191,36 @@ TEST(PlacementChain, RejectsAMinimiserFarFromTheEdge) {
   const auto choice = optimal_placement(q, {0, 0, 0}, {0, 0.1, 0});
   EXPECT_NE(choice.branch, Placement_branch::solve);
   EXPECT_LE(choice.point.norm(), 0.1 + 1e-12);
+}
+
+TEST(PlacementChain, TheConditioningTestDecidesAsTheEigenvaluesDo) {
+  // R diag(l0, l1, l2) R^T over random rotations, l0 <= l1 <= l2 with l0 / l2 from 1 down to 1e-14
+  // or 0 and l1 between on a log scale, or equal to l0: the shortcuts of is_well_conditioned must
+  // give l0 > 1e-6 l2 wherever they decide. Ratios within 0.1% of the limit are left out: there
+  // the eigen solver's own rounding may decide either way.
+  using cgal_policies::internal::is_well_conditioned;
+  using cgal_policies::internal::kMinimumConditioning;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(-1, 1), share(0, 1);
+  std::size_t well = 0, ill = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const Eigen::Matrix3d rotation =
+        Eigen::Quaterniond(unit(random), unit(random), unit(random), unit(random))
+            .normalized()
+            .toRotationMatrix();
+    const double l2 = std::pow(10.0, 4 * unit(random));
+    const double low = -14 * share(random), high = low * share(random);
+    const double l0 = i % 5 == 0 ? 0.0 : l2 * std::pow(10.0, low);
+    const double l1 = i % 7 == 0 ? l0 : l2 * std::pow(10.0, high);
+    if (std::abs(l0 / l2 / kMinimumConditioning - 1) < 1e-3) continue;
+    const Eigen::Matrix3d a =
+        rotation * Eigen::Vector3d(l0, l1, l2).asDiagonal() * rotation.transpose();
+    const bool expected = l0 > kMinimumConditioning * l2;
+    ASSERT_EQ(is_well_conditioned(a), expected) << "l0 " << l0 << " l1 " << l1 << " l2 " << l2;
+    (expected ? well : ill) += 1;
+  }
+  EXPECT_GT(well, 4000u);  // both sides well covered
+  EXPECT_GT(ill, 4000u);
 }
 
 TEST(BorderPlanes, KeepABorderVertexOnItsBorderLine) {
