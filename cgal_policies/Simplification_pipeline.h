@@ -93,6 +93,7 @@ class Simplification_pipeline {
     report.parts = cells ? cells->size() : 1;
     // 3: the policy; its seconds exclude the garbage collection after it.
     timed(report, Simplification_pass::simplification, [&] {
+      const std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
       std::optional<internal::Policy_outcome> outcome;
       if (cells) {
         internal::collapse_zero_length_edges(mesh);
@@ -103,11 +104,11 @@ class Simplification_pipeline {
                                          report.target_faces);
         outcome = internal::run_partitioned(
             mesh, report.target_faces, *cells, m_options.threads,
-            part_or_stitched_runner(mesh, input_as_cut, diagonal, progress));
+            part_or_stitched_runner(mesh, input_as_cut, diagonal, progress, started));
       }
       if (!outcome) {
         report.parts = 1;
-        outcome = run_policy(mesh, report.target_faces, m_options, nullptr);
+        outcome = run_policy_in_time(mesh, report.target_faces, m_options, nullptr, started);
       }
       report.stop_reason = outcome->stop_reason;
       report.attributes_carried = outcome->attributes_carried;
@@ -140,7 +141,7 @@ class Simplification_pipeline {
     const std::optional<internal::Policy_outcome> outcome = internal::run_parts(
         report.parts, input.faces(), input.vertices(), report.target_faces, m_options.threads,
         parts_of(input, input.spills()),
-        part_or_stitched_runner(mesh, input_as_cut, input.diagonal(), progress), mesh);
+        part_or_stitched_runner(mesh, input_as_cut, input.diagonal(), progress, start), mesh);
     if (!outcome) throw std::logic_error("a part lost a vertex of its cut");
     report.stop_reason = outcome->stop_reason;
     report.attributes_carried = outcome->attributes_carried;
@@ -287,7 +288,8 @@ class Simplification_pipeline {
     } else if (job.partitioned) {
       result.kept_locks = internal::simplify_part(
           part, job.report.target_faces, job.whole_faces, [&](Mesh& m, std::size_t target) {
-            return run_on_part(m, target, job.whole_diagonal, nullptr);
+            return run_on_part(m, target, job.whole_diagonal, nullptr,
+                               std::chrono::steady_clock::now());
           });
     } else {
       result.outcome = run_policy(part, job.report.target_faces, m_options, nullptr);
@@ -330,12 +332,12 @@ class Simplification_pipeline {
         mesh = stitched(kept_locks ? internal::done_part_file : internal::part_file, 0,
                         job.whole_vertices);
         if (kept_locks) {
-          outcome = run_over_stitched(mesh, report.target_faces,
-                                      keeps_input_as_cut()
-                                          ? std::optional<Mesh>(internal::read_raw_mesh<Point>(
-                                                internal::job_input_as_cut_file(folder)))
-                                          : std::nullopt,
-                                      job.whole_diagonal, nullptr);
+          outcome = run_over_stitched(
+              mesh, report.target_faces,
+              keeps_input_as_cut() ? std::optional<Mesh>(internal::read_raw_mesh<Point>(
+                                         internal::job_input_as_cut_file(folder)))
+                                   : std::nullopt,
+              job.whole_diagonal, nullptr, std::chrono::steady_clock::now());
         } else {
           report.parts = 1;
           outcome = run_policy(mesh, report.target_faces, m_options, nullptr);
@@ -453,34 +455,41 @@ class Simplification_pipeline {
   // certified against the part as cut, in the whole's lengths. The parts then keep it together:
   // a point of the input lies in some part's input, within tau of that part's output, and a point
   // of the output in some part's output, within tau of that part's input. Its progress goes to
-  // `progress`, the whole run's (none in a job's task, which runs alone).
+  // `progress`, the whole run's (none in a job's task, which runs alone). A time limit counts
+  // from `started`.
   internal::Policy_outcome run_on_part(Mesh& part, std::size_t target, double diagonal,
-                                       internal::Part_progress* progress) const {
+                                       internal::Part_progress* progress,
+                                       std::chrono::steady_clock::time_point started) const {
     Simplification_options options = in_lengths_of(m_options, part, diagonal);
     options.progress = progress ? progress->of_part(part.number_of_faces()) : nullptr;
-    return run_policy(part, target, options, nullptr);
+    return run_policy_in_time(part, target, options, nullptr, started);
   }
 
   // The last pass of a partitioned run, over the stitched `whole`: under a bound, certified
   // against `input_as_cut` (keeps_input_as_cut), of that diagonal. Its progress goes to
-  // `progress`, the whole run's, when there is one (none in a job's task).
+  // `progress`, the whole run's, when there is one (none in a job's task). A time limit counts
+  // from `started`.
   internal::Policy_outcome run_over_stitched(Mesh& whole, std::size_t target,
                                              const std::optional<Mesh>& input_as_cut,
                                              double diagonal,
-                                             const internal::Part_progress* progress) const {
+                                             const internal::Part_progress* progress,
+                                             std::chrono::steady_clock::time_point started) const {
     const Mesh* input = input_as_cut ? &*input_as_cut : nullptr;
     Simplification_options options = in_lengths_of(m_options, input ? *input : whole, diagonal);
     if (progress) options.progress = progress->of_last_pass();
-    return run_policy(whole, target, options, input);
+    return run_policy_in_time(whole, target, options, input, started);
   }
 
   // The policy of a partitioned run whose stitched parts become `whole` (run_parts' run_policy):
-  // run_on_part on each part, then run_over_stitched, both with the whole run's progress.
+  // run_on_part on each part, then run_over_stitched, both with the whole run's progress and
+  // its time limit, counted from `started`.
   auto part_or_stitched_runner(const Mesh& whole, const std::optional<Mesh>& input_as_cut,
-                               double diagonal, internal::Part_progress& progress) const {
-    return [this, &whole, &input_as_cut, diagonal, &progress](Mesh& m, std::size_t target) {
-      return &m == &whole ? run_over_stitched(m, target, input_as_cut, diagonal, &progress)
-                          : run_on_part(m, target, diagonal, &progress);
+                               double diagonal, internal::Part_progress& progress,
+                               std::chrono::steady_clock::time_point started) const {
+    return [this, &whole, &input_as_cut, diagonal, &progress, started](Mesh& m,
+                                                                       std::size_t target) {
+      return &m == &whole ? run_over_stitched(m, target, input_as_cut, diagonal, &progress, started)
+                          : run_on_part(m, target, diagonal, &progress, started);
     };
   }
 
@@ -569,6 +578,22 @@ class Simplification_pipeline {
     if (!m_options.interrupted || !m_options.interrupted()) return false;
     report.stop_reason = Stop_reason::interrupted;
     return true;
+  }
+
+  // run_policy with what is left of options' time limit, which counts from `started`: the
+  // parts and the last pass of a partitioned run share one deadline. When none is left, `mesh`
+  // stays as it is: even a run stopped at once would first cost every edge.
+  static internal::Policy_outcome run_policy_in_time(
+      Mesh& mesh, std::size_t target, Simplification_options options, const Mesh* reference,
+      std::chrono::steady_clock::time_point started) {
+    if (options.time_limit_seconds > 0) {
+      options.time_limit_seconds -= seconds_since(started);
+      if (!(options.time_limit_seconds > 0))
+        return {mesh.number_of_faces() <= target ? Stop_reason::target_reached
+                                                 : Stop_reason::time_limit,
+                Corner_attributes<Point>(mesh).any_corner_values()};
+    }
+    return run_policy(mesh, target, options, reference);
   }
 
   // `reference`: the input a bound is certified against, when it is not `mesh` as it is now.

@@ -34,6 +34,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -43,6 +44,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -805,6 +807,28 @@ TEST(PartitionedRun, AsksEachPartForItsShareBesideItsLockedVertices) {
   // Never more than the part has.
   EXPECT_TRUE(internal::simplify_part(part, 320, 640, record));
   EXPECT_EQ(asked, 320u);
+}
+
+// A time limit is the whole pass's: the parts and the last pass of a partitioned run share one
+// deadline. The interruption poll, every 256 collapses, sleeps 100 ms, so the first part to run
+// uses up the 0.25 s within three polls (768 collapses at most); the other parts and the last
+// pass then find no time left and keep their faces. With a limit of its own, each part would
+// collapse as much again.
+TEST(PartitionedRun, ItsPartsShareOneTimeLimit) {
+  Mesh mesh = loop_sphere(5);  // 20,480 faces: each part needs over 2,000 collapses
+  cgal_policies::Simplification_options options = policy_alone("gh", 200);
+  options.parts = 4;
+  options.threads = 1;
+  options.time_limit_seconds = 0.25;
+  options.interrupted = [] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    return false;
+  };
+  const cgal_policies::Simplification_report report = apps::Pipeline(options).run(mesh);
+  EXPECT_EQ(report.parts, 4u);
+  EXPECT_EQ(report.stop_reason, cgal_policies::Stop_reason::time_limit);
+  EXPECT_GE(report.output_faces, 20480u - 2 * 768);
+  EXPECT_TRUE(apps::check_mesh_validity(mesh).valid);
 }
 
 // Two vertices on the cut moved onto one point: CGAL collapses the edge between them without
