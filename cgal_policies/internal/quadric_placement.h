@@ -42,6 +42,8 @@ inline bool is_well_conditioned(const Eigen::Matrix3d& a) {
   const double trace = a.trace();
   if (!(trace > 0)) return false;
   const double det = a.determinant();
+  // A large det settles curved stretches before e2 is needed (e2 <= trace^2 / 3, so the test on
+  // det / e2 below would pass them too).
   if (det > kMinimumConditioning * trace * trace * trace) return true;
   const double e2 = a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0) + a(0, 0) * a(2, 2) - a(0, 2) * a(2, 0) +
                     a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1);
