@@ -19,6 +19,15 @@ bool build_mesh_from_clean_triangles(const std::vector<Point>& points,
     if (polygon.size() != 3) return false;
     corners.insert(corners.end(), polygon.begin(), polygon.end());
   }
+  return build_mesh_from_clean_triangles(points, corners, mesh, unused_points, vertex_of_point,
+                                         threads);
+}
+
+bool build_mesh_from_clean_triangles(const std::vector<Point>& points,
+                                     const std::vector<std::size_t>& corners, Mesh& mesh,
+                                     std::size_t& unused_points,
+                                     std::vector<Mesh::Vertex_index>* vertex_of_point,
+                                     std::size_t threads) {
   return internal::build_clean_triangle_mesh(points, corners, mesh, unused_points, vertex_of_point,
                                              threads);
 }

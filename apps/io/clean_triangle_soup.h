@@ -25,6 +25,13 @@ bool build_mesh_from_clean_triangles(const std::vector<Point>& points,
                                      std::vector<Mesh::Vertex_index>* vertex_of_point = nullptr,
                                      std::size_t threads = 1);
 
+// The same from the triangles `corners`, three point indices each (all below points.size()).
+bool build_mesh_from_clean_triangles(const std::vector<Point>& points,
+                                     const std::vector<std::size_t>& corners, Mesh& mesh,
+                                     std::size_t& unused_points,
+                                     std::vector<Mesh::Vertex_index>* vertex_of_point = nullptr,
+                                     std::size_t threads = 1);
+
 }  // namespace io
 }  // namespace cgal_policies
 

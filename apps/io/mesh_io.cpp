@@ -29,6 +29,8 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
+#include <string_view>
 
 namespace PMP = CGAL::Polygon_mesh_processing;
 namespace fs = std::filesystem;
@@ -164,20 +166,40 @@ Mesh repaired_triangle_mesh(const std::string& path, std::vector<Point>& points,
 
 bool is_gltf(const std::string& extension) { return extension == ".gltf" || extension == ".glb"; }
 
-// The soup of a file of any format but STL, and its glTF looks when it is one.
-Polygon_soup read_soup(const std::string& path, const std::string& extension,
-                       std::shared_ptr<const tinygltf::Model>& gltf_looks,
-                       std::vector<std::string>& left_out) {
-  if (is_gltf(extension)) {
-    Gltf_soup read = read_gltf(path, extension == ".glb");
-    gltf_looks = std::move(read.looks);
-    left_out = std::move(read.left_out);
-    return std::move(read.soup);
-  }
-  const std::string bytes = file_bytes(path);
+// The soup of an OBJ, OFF or PLY file of these bytes.
+Polygon_soup parse_soup(const std::string& path, const std::string& extension,
+                        std::string_view bytes) {
   return extension == ".obj"   ? parse_obj(path, bytes)
          : extension == ".off" ? parse_off(path, bytes)
                                : parse_ply(path, bytes);
+}
+
+// read_triangle_mesh's fast path for a PLY file of triangles (parse_ply_triangles) that make a
+// clean mesh as they stand, the vertices' values unused or none: the mesh the general path builds,
+// without a polygon a face. Nothing when the file is not such a one; the general path then reads
+// it, repairs it or says what is wrong with it.
+std::optional<Mesh> clean_ply_mesh(const std::string& path, std::string_view bytes,
+                                   Read_report* report, Corner_attribute_reading attributes,
+                                   std::size_t threads) {
+  const std::optional<Ply_triangles> ply =
+      parse_ply_triangles(path, bytes, attributes == Corner_attribute_reading::keep);
+  if (!ply || ply->corners.empty()) return std::nullopt;
+  for (const Point& p : ply->points)
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+      return std::nullopt;
+  for (const std::size_t index : ply->corners)
+    if (index >= ply->points.size()) return std::nullopt;
+  Mesh mesh;
+  std::size_t unused_points = 0;
+  if (!build_mesh_from_clean_triangles(ply->points, ply->corners, mesh, unused_points, nullptr,
+                                       threads))
+    return std::nullopt;
+  if (report) {
+    report->repairs.clear();
+    if (unused_points > 0) report->repairs.push_back(unused_vertices_removed(unused_points));
+    report->left_out.clear();
+  }
+  return mesh;
 }
 
 // The mesh of `soup`, read from `path` (any format but STL; a glTF file's `gltf_looks`), as
@@ -318,7 +340,19 @@ Mesh read_triangle_mesh(const std::string& path, Read_report* report,
   if (extension != ".stl") {
     std::shared_ptr<const tinygltf::Model> gltf_looks;
     std::vector<std::string> left_out;
-    Polygon_soup soup = read_soup(path, extension, gltf_looks, left_out);
+    Polygon_soup soup;
+    if (is_gltf(extension)) {
+      Gltf_soup read = read_gltf(path, extension == ".glb");
+      gltf_looks = std::move(read.looks);
+      left_out = std::move(read.left_out);
+      soup = std::move(read.soup);
+    } else {
+      const std::string bytes = file_bytes(path);
+      if (extension == ".ply")
+        if (std::optional<Mesh> mesh = clean_ply_mesh(path, bytes, report, attributes, threads))
+          return std::move(*mesh);
+      soup = parse_soup(path, extension, bytes);
+    }
     Mesh mesh = mesh_of_soup(path, path, soup, std::move(gltf_looks), report, attributes, threads);
     if (report) report->left_out = std::move(left_out);
     return mesh;

@@ -513,9 +513,38 @@ bool is_index_list(const Ply_property& p) {
   return p.count_type && (p.name == "vertex_indices" || p.name == "vertex_index");
 }
 
+// Where the PLY reader puts faces: polygons of any size, one vector each...
+struct Polygon_faces {
+  std::vector<std::vector<std::size_t>>& polygons;
+
+  void reserve(std::size_t more) { polygons.reserve(polygons.size() + more); }
+  bool add_polygon(const std::vector<double>& corners) {
+    polygons.emplace_back(corners.begin(), corners.end());
+    return true;
+  }
+  void add_triangle(std::size_t a, std::size_t b, std::size_t c) { polygons.push_back({a, b, c}); }
+};
+
+// ... or triangles, three corners each in one list, without an allocation a face; a polygon of
+// another size is refused.
+struct Flat_triangle_faces {
+  std::vector<std::size_t>& corners;
+
+  void reserve(std::size_t more) { corners.reserve(corners.size() + 3 * more); }
+  bool add_polygon(const std::vector<double>& polygon) {
+    if (polygon.size() != 3) return false;
+    corners.insert(corners.end(), polygon.begin(), polygon.end());
+    return true;
+  }
+  void add_triangle(std::size_t a, std::size_t b, std::size_t c) {
+    corners.insert(corners.end(), {a, b, c});
+  }
+};
+
 // Triangles of a strip, alternately turned so that all face the same way; -1 restarts the strip,
 // and the degenerate triangles strips use to turn are left out.
-void add_strip_triangles(const std::vector<double>& strip, Polygon_soup& soup) {
+template <class Faces>
+void add_strip_triangles(const std::vector<double>& strip, Faces& faces) {
   std::size_t run_start = 0;
   for (std::size_t k = 0; k < strip.size(); ++k) {
     if (strip[k] < 0) {
@@ -526,16 +555,18 @@ void add_strip_triangles(const std::vector<double>& strip, Polygon_soup& soup) {
     std::size_t a = std::size_t(strip[k - 2]), b = std::size_t(strip[k - 1]);
     const std::size_t c = std::size_t(strip[k]);
     if ((k - run_start) % 2 == 1) std::swap(a, b);
-    if (a != b && b != c && a != c) soup.polygons.push_back({a, b, c});
+    if (a != b && b != c && a != c) faces.add_triangle(a, b, c);
   }
 }
 
-}  // namespace
-
-Polygon_soup parse_ply(const std::string& source, std::string_view bytes) {
+// The body of parse_ply: the points into `points`, the vertices' normals, texture coordinates
+// and colours into `values` (left out when null), the faces into `faces`. False as soon as
+// `faces` refuses a face, or, with `no_values`, when the vertices carry values.
+template <class Faces>
+bool read_ply(const std::string& source, std::string_view bytes, std::vector<Point>& points,
+              Corner_tables* values, bool no_values, Faces faces) {
   const Ply_header header = parse_ply_header(source, bytes, bytes.size());
-  Ply_values values(source, bytes.substr(header.body), header.format);
-  Polygon_soup soup;
+  Ply_values reader(source, bytes.substr(header.body), header.format);
   bool has_points = false, has_faces = false;
   std::vector<double> list;
   for (const Ply_element& element : header.elements) {
@@ -546,9 +577,11 @@ Polygon_soup parse_ply(const std::string& source, std::string_view bytes) {
       if (std::count(slots.xyz, slots.xyz + 3, -1) > 0)
         fail(source, "the vertex element has no x, y and z");
       has_points = true;
-      soup.points.reserve(element.count);
+      if (no_values && (slots.normal[0] >= 0 || slots.uv[0] >= 0 || slots.color[0] >= 0))
+        return false;
+      points.reserve(element.count);
     }
-    if (is_face) soup.polygons.reserve(soup.polygons.size() + element.count);
+    if (is_face) faces.reserve(element.count);
     has_faces = has_faces ||
                 ((is_face || is_strip) &&
                  std::any_of(element.properties.begin(), element.properties.end(), is_index_list));
@@ -557,15 +590,15 @@ Polygon_soup parse_ply(const std::string& source, std::string_view bytes) {
       for (std::size_t p = 0; p < element.properties.size(); ++p) {
         const Ply_property& property = element.properties[p];
         if (!property.count_type) {
-          slots.place(int(p), values.next(*property.type), *property.type, vertex);
+          slots.place(int(p), reader.next(*property.type), *property.type, vertex);
           continue;
         }
-        const double count = values.next(*property.count_type);
-        if (!(count >= 0 && count <= double(values.values_left())) || count != std::floor(count))
+        const double count = reader.next(*property.count_type);
+        if (!(count >= 0 && count <= double(reader.values_left())) || count != std::floor(count))
           fail(source, element.name + " " + std::to_string(row) + ": a list count of " +
                            std::to_string(count) + " does not fit in the file");
         list.resize(std::size_t(count));
-        for (double& item : list) item = values.next(*property.type);
+        for (double& item : list) item = reader.next(*property.type);
         if (!((is_face || is_strip) && is_index_list(property))) continue;
         for (const double index : list)
           if (!(index == std::floor(index) && index < 1e18 &&
@@ -573,27 +606,45 @@ Polygon_soup parse_ply(const std::string& source, std::string_view bytes) {
             fail(source, element.name + " " + std::to_string(row) + ": " + std::to_string(index) +
                              " is not a vertex index");
         if (is_strip)
-          add_strip_triangles(list, soup);
-        else
-          soup.polygons.emplace_back(list.begin(), list.end());
+          add_strip_triangles(list, faces);
+        else if (!faces.add_polygon(list))
+          return false;
       }
       if (!is_vertex) continue;
-      soup.points.emplace_back(vertex.xyz[0], vertex.xyz[1], vertex.xyz[2]);
+      points.emplace_back(vertex.xyz[0], vertex.xyz[1], vertex.xyz[2]);
       const std::string non_finite = slots.non_finite(vertex);
       if (!non_finite.empty()) fail(source, "vertex " + std::to_string(row) + ": " + non_finite);
+      if (!values) continue;
       if (slots.normal[0] >= 0)
-        soup.corners.normals.emplace_back(vertex.normal[0], vertex.normal[1], vertex.normal[2]);
-      if (slots.uv[0] >= 0) soup.corners.uvs.push_back({vertex.uv[0], vertex.uv[1]});
-      if (slots.color[0] >= 0) soup.corners.colors.push_back(vertex.color);
+        values->normals.emplace_back(vertex.normal[0], vertex.normal[1], vertex.normal[2]);
+      if (slots.uv[0] >= 0) values->uvs.push_back({vertex.uv[0], vertex.uv[1]});
+      if (slots.color[0] >= 0) values->colors.push_back(vertex.color);
     }
   }
   if (!has_points) fail(source, "no vertex element");
   if (!has_faces) fail(source, "no faces (no face or tristrips element with vertex_indices)");
+  return true;
+}
+
+}  // namespace
+
+Polygon_soup parse_ply(const std::string& source, std::string_view bytes) {
+  Polygon_soup soup;
+  read_ply(source, bytes, soup.points, &soup.corners, false, Polygon_faces{soup.polygons});
   // Per-vertex values: every corner takes its vertex's entry.
   if (!soup.corners.normals.empty()) soup.corners.polygon_normals = soup.polygons;
   if (!soup.corners.uvs.empty()) soup.corners.polygon_uvs = soup.polygons;
   if (!soup.corners.colors.empty()) soup.corners.polygon_colors = soup.polygons;
   return soup;
+}
+
+std::optional<Ply_triangles> parse_ply_triangles(const std::string& source, std::string_view bytes,
+                                                 bool values_wanted) {
+  Ply_triangles triangles;
+  if (!read_ply(source, bytes, triangles.points, nullptr, values_wanted,
+                Flat_triangle_faces{triangles.corners}))
+    return std::nullopt;
+  return triangles;
 }
 
 void join_equal_points(Polygon_soup& soup) {

@@ -77,6 +77,19 @@ Polygon_soup parse_off(const std::string& source, std::string_view bytes);
 // Io_error (unreadable input, "<source>: <cause>").
 Polygon_soup parse_ply(const std::string& source, std::string_view bytes);
 
+// A PLY file's points and triangles, these as one list of three point indices a triangle: the
+// reader's fast path for large scans, which as polygons cost an allocation a face.
+struct Ply_triangles {
+  std::vector<Point> points;
+  std::vector<std::size_t> corners;
+};
+
+// What parse_ply reads, as Ply_triangles, without the vertices' normals, texture coordinates and
+// colours; nothing when a face is not a triangle, or when `values_wanted` and the vertices carry
+// such values. Throws as parse_ply does.
+std::optional<Ply_triangles> parse_ply_triangles(const std::string& source, std::string_view bytes,
+                                                 bool values_wanted);
+
 // Formats that store attributes per vertex (PLY, glTF) split a vertex on a seam into one vertex
 // per side, at the same point. This joins the points that are exactly equal into one, numbered in
 // the order of their first appearance, and renumbers the polygons; the corner tables keep naming

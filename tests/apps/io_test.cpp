@@ -169,6 +169,49 @@ TEST(Readers, PlyTristripsBecomeTrianglesFacingOneWay) {
   EXPECT_EQ(soup.polygons, (Polygons{{0, 1, 2}, {2, 1, 3}, {4, 5, 6}}));
 }
 
+// A PLY file of triangles also comes as one flat list, without a vector a face; a polygon of
+// another size, or vertex values that are wanted, leave it to parse_ply.
+TEST(Readers, PlyTrianglesComeAsOneFlatList) {
+  for (bool big_endian : {false, true}) {
+    const std::optional<apps::Ply_triangles> square =
+        apps::parse_ply_triangles("f", binary_square(big_endian), true);
+    ASSERT_TRUE(square);
+    EXPECT_EQ(coordinates(Polygon_soup{square->points, {}, {}}), kSquare);
+    EXPECT_EQ(square->corners, (std::vector<std::size_t>{0, 1, 2, 0, 2, 3}));
+  }
+  const std::optional<apps::Ply_triangles> strips = apps::parse_ply_triangles(
+      "f",
+      "ply\nformat ascii 1.0\nelement vertex 7\nproperty float x\nproperty float y\n"
+      "property float z\nelement tristrips 1\nproperty list int int vertex_indices\n"
+      "end_header\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n5 5 0\n6 5 0\n5 6 0\n"
+      "10 0 1 2 3 3 -1 4 5 6 6\n",
+      false);
+  ASSERT_TRUE(strips);
+  EXPECT_EQ(strips->corners, (std::vector<std::size_t>{0, 1, 2, 2, 1, 3, 4, 5, 6}));
+
+  const std::string quad =
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+      "0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n";
+  EXPECT_FALSE(apps::parse_ply_triangles("f", quad, false));
+  const std::string coloured =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+      "0 0 0 255 0 0\n1 0 0 0 255 0\n0 1 0 0 0 255\n3 0 1 2\n";
+  EXPECT_FALSE(apps::parse_ply_triangles("f", coloured, true));
+  const std::optional<apps::Ply_triangles> uncoloured =
+      apps::parse_ply_triangles("f", coloured, false);
+  ASSERT_TRUE(uncoloured);
+  EXPECT_EQ(uncoloured->corners, (std::vector<std::size_t>{0, 1, 2}));
+  const auto flat = [](const std::string& source, const std::string& bytes) {
+    return apps::parse_ply_triangles(source, bytes, false);
+  };
+  EXPECT_EQ(
+      refusal(flat, "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n"),
+      "f: the vertex element has no x, y and z");
+}
+
 TEST(Readers, MalformedFilesAreOneBadInputLine) {
   const auto off = [](const std::string& source, const std::string& bytes) {
     return apps::parse_off(source, bytes);
@@ -307,6 +350,36 @@ TEST(CleanSoups, ShippedMeshesAreBuiltAsCgalBuildsThem) {
     test_meshes::expect_same_connectivity(mesh, built_by_cgal(points, polygons));
   }
   EXPECT_GE(taken, 6u);
+}
+
+// A PLY file of triangles is read without a polygon a face (parse_ply_triangles): into the mesh
+// that the general path builds from parse_ply's soup, halfedge for halfedge, with the same repairs.
+TEST(CleanSoups, PlyTrianglesAreReadAsThePolygonPathBuildsThem) {
+  const fs::path folder = fs::temp_directory_path() / ("ply_flat_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  const std::string spare_point = (folder / "spare_point.ply").string();
+  std::ofstream(spare_point)
+      << "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\n"
+         "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n"
+         "0 0 0\n1 0 0\n1 1 0\n9 9 9\n0 1 0\n3 0 1 2\n3 0 2 4\n";
+  std::vector<std::string> paths = {spare_point};
+  if (!test_meshes::real_meshes_skipped())
+    paths.push_back(test_meshes::data_file("dragon_res2.ply"));
+  for (const std::string& path : paths) {
+    SCOPED_TRACE(path);
+    apps::Read_report report;
+    const Mesh mesh = apps::read_triangle_mesh(path, &report);
+    apps::Polygon_soup soup = apps::parse_ply(path, read_text(path));
+    apps::Read_report general_report;
+    const Mesh general =
+        apps::triangle_mesh_from_soup(path, soup.points, soup.polygons, &general_report);
+    test_meshes::expect_same_connectivity(mesh, general);
+    EXPECT_EQ(report.repairs, general_report.repairs);
+  }
+  apps::Read_report report;
+  EXPECT_EQ(apps::read_triangle_mesh(spare_point, &report).number_of_vertices(), 4u);
+  EXPECT_EQ(report.repairs, std::vector<std::string>{"removed 1 unused vertices"});
+  fs::remove_all(folder);
 }
 
 }  // namespace clean_soups
