@@ -75,20 +75,27 @@ std::string file_bytes(const std::string& path) {
   return bytes;
 }
 
-void check_soup(const std::string& path, const std::vector<Point>& points,
-                const std::vector<Polygon>& polygons) {
-  if (polygons.empty()) fail_input(path, "no faces");
+void check_points_finite(const std::string& path, const std::vector<Point>& points) {
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Point& p = points[i];
     if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
       fail_input(path, "non-finite coordinate at vertex " + std::to_string(i));
   }
+}
+
+void check_index(const std::string& path, std::size_t face, std::size_t index,
+                 std::size_t point_count) {
+  if (index >= point_count)
+    fail_input(path, "face " + std::to_string(face) + " refers to vertex " + std::to_string(index) +
+                         " but there are only " + std::to_string(point_count));
+}
+
+void check_soup(const std::string& path, const std::vector<Point>& points,
+                const std::vector<Polygon>& polygons) {
+  if (polygons.empty()) fail_input(path, "no faces");
+  check_points_finite(path, points);
   for (std::size_t f = 0; f < polygons.size(); ++f)
-    for (std::size_t index : polygons[f])
-      if (index >= points.size())
-        fail_input(path, "face " + std::to_string(f) + " refers to vertex " +
-                             std::to_string(index) + " but there are only " +
-                             std::to_string(points.size()));
+    for (std::size_t index : polygons[f]) check_index(path, f, index, points.size());
 }
 
 std::string unused_vertices_removed(std::size_t count) {
@@ -166,40 +173,41 @@ Mesh repaired_triangle_mesh(const std::string& path, std::vector<Point>& points,
 
 bool is_gltf(const std::string& extension) { return extension == ".gltf" || extension == ".glb"; }
 
-// The soup of an OBJ, OFF or PLY file of these bytes.
-Polygon_soup parse_soup(const std::string& path, const std::string& extension,
-                        std::string_view bytes) {
-  return extension == ".obj"   ? parse_obj(path, bytes)
-         : extension == ".off" ? parse_off(path, bytes)
-                               : parse_ply(path, bytes);
-}
-
-// read_triangle_mesh's fast path for a PLY file of triangles (parse_ply_triangles) that make a
-// clean mesh as they stand, the vertices' values unused or none: the mesh the general path builds,
-// without a polygon a face. Nothing when the file is not such a one; the general path then reads
-// it, repairs it or says what is wrong with it.
-std::optional<Mesh> clean_ply_mesh(const std::string& path, std::string_view bytes,
+// read_triangle_mesh's reading of a PLY file. A file of triangles whose vertices carry no values
+// to keep is parsed into one flat list (parse_ply_triangles), without a polygon a face, checked as
+// check_soup checks a soup, and built straight into the mesh when it is clean as it stands.
+// Otherwise nothing, and `soup` holds the file for the general path, which repairs it: those
+// triangles as polygons, or, for any other file, parse_ply's soup.
+std::optional<Mesh> read_clean_ply(const std::string& path, std::string_view bytes,
                                    Read_report* report, Corner_attribute_reading attributes,
-                                   std::size_t threads) {
-  const std::optional<Ply_triangles> ply =
+                                   std::size_t threads, Polygon_soup& soup) {
+  std::optional<Ply_triangles> ply =
       parse_ply_triangles(path, bytes, attributes == Corner_attribute_reading::keep);
-  if (!ply || ply->corners.empty()) return std::nullopt;
-  for (const Point& p : ply->points)
-    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
-      return std::nullopt;
-  for (const std::size_t index : ply->corners)
-    if (index >= ply->points.size()) return std::nullopt;
-  Mesh mesh;
-  std::size_t unused_points = 0;
-  if (!build_mesh_from_clean_triangles(ply->points, ply->corners, mesh, unused_points, nullptr,
-                                       threads))
+  if (!ply) {
+    soup = parse_ply(path, bytes);
     return std::nullopt;
-  if (report) {
-    report->repairs.clear();
-    if (unused_points > 0) report->repairs.push_back(unused_vertices_removed(unused_points));
-    report->left_out.clear();
   }
-  return mesh;
+  if (!ply->corners.empty()) {
+    check_points_finite(path, ply->points);
+    for (std::size_t k = 0; k < ply->corners.size(); ++k)
+      check_index(path, k / 3, ply->corners[k], ply->points.size());
+    Mesh mesh;
+    std::size_t unused_points = 0;
+    if (build_mesh_from_clean_triangles(ply->points, ply->corners, mesh, unused_points, nullptr,
+                                        threads)) {
+      if (report) {
+        report->repairs.clear();
+        if (unused_points > 0) report->repairs.push_back(unused_vertices_removed(unused_points));
+        report->left_out.clear();
+      }
+      return mesh;
+    }
+  }
+  soup.points = std::move(ply->points);
+  soup.polygons.reserve(ply->corners.size() / 3);
+  for (std::size_t k = 0; k < ply->corners.size(); k += 3)
+    soup.polygons.push_back({ply->corners[k], ply->corners[k + 1], ply->corners[k + 2]});
+  return std::nullopt;
 }
 
 // The mesh of `soup`, read from `path` (any format but STL; a glTF file's `gltf_looks`), as
@@ -348,10 +356,11 @@ Mesh read_triangle_mesh(const std::string& path, Read_report* report,
       soup = std::move(read.soup);
     } else {
       const std::string bytes = file_bytes(path);
-      if (extension == ".ply")
-        if (std::optional<Mesh> mesh = clean_ply_mesh(path, bytes, report, attributes, threads))
-          return std::move(*mesh);
-      soup = parse_soup(path, extension, bytes);
+      if (extension != ".ply")
+        soup = extension == ".obj" ? parse_obj(path, bytes) : parse_off(path, bytes);
+      else if (std::optional<Mesh> mesh =
+                   read_clean_ply(path, bytes, report, attributes, threads, soup))
+        return std::move(*mesh);
     }
     Mesh mesh = mesh_of_soup(path, path, soup, std::move(gltf_looks), report, attributes, threads);
     if (report) report->left_out = std::move(left_out);

@@ -352,6 +352,20 @@ TEST(CleanSoups, ShippedMeshesAreBuiltAsCgalBuildsThem) {
   EXPECT_GE(taken, 6u);
 }
 
+// Expects read_triangle_mesh to build from the PLY file at `path` the mesh that the polygon path
+// builds from parse_ply's soup, halfedge for halfedge, with the same repairs; returns its report.
+apps::Read_report expect_read_as_the_polygon_path_reads(const std::string& path) {
+  apps::Read_report report;
+  const Mesh mesh = apps::read_triangle_mesh(path, &report);
+  apps::Polygon_soup soup = apps::parse_ply(path, read_text(path));
+  apps::Read_report general_report;
+  const Mesh general =
+      apps::triangle_mesh_from_soup(path, soup.points, soup.polygons, &general_report);
+  test_meshes::expect_same_connectivity(mesh, general);
+  EXPECT_EQ(report.repairs, general_report.repairs);
+  return report;
+}
+
 // A PLY file of triangles is read without a polygon a face (parse_ply_triangles): into the mesh
 // that the general path builds from parse_ply's soup, halfedge for halfedge, with the same repairs.
 TEST(CleanSoups, PlyTrianglesAreReadAsThePolygonPathBuildsThem) {
@@ -367,18 +381,51 @@ TEST(CleanSoups, PlyTrianglesAreReadAsThePolygonPathBuildsThem) {
     paths.push_back(test_meshes::data_file("dragon_res2.ply"));
   for (const std::string& path : paths) {
     SCOPED_TRACE(path);
-    apps::Read_report report;
-    const Mesh mesh = apps::read_triangle_mesh(path, &report);
-    apps::Polygon_soup soup = apps::parse_ply(path, read_text(path));
-    apps::Read_report general_report;
-    const Mesh general =
-        apps::triangle_mesh_from_soup(path, soup.points, soup.polygons, &general_report);
-    test_meshes::expect_same_connectivity(mesh, general);
-    EXPECT_EQ(report.repairs, general_report.repairs);
+    expect_read_as_the_polygon_path_reads(path);
   }
   apps::Read_report report;
   EXPECT_EQ(apps::read_triangle_mesh(spare_point, &report).number_of_vertices(), 4u);
   EXPECT_EQ(report.repairs, std::vector<std::string>{"removed 1 unused vertices"});
+  fs::remove_all(folder);
+}
+
+// A PLY file of triangles that needs repair, or that is bad input, fares as through the
+// polygon path: the same repaired mesh and repairs, the same one error line.
+TEST(CleanSoups, PlyTrianglesThePolygonPathRepairsOrRefusesFareTheSame) {
+  const fs::path folder = fs::temp_directory_path() / ("ply_repair_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  const auto ply = [&](const std::string& name, const std::string& points, const std::string& faces,
+                       std::size_t face_count) {
+    std::istringstream rows(points);
+    std::size_t point_count = 0;
+    for (std::string row; std::getline(rows, row);) ++point_count;
+    const std::string path = (folder / name).string();
+    std::ofstream(path) << "ply\nformat ascii 1.0\nelement vertex " << point_count
+                        << "\nproperty float x\nproperty float y\nproperty float z\nelement face "
+                        << face_count << "\nproperty list uchar int vertex_indices\nend_header\n"
+                        << points << faces;
+    return path;
+  };
+  // Two triangles that touch at a point, one of them twice, and one with a repeated corner.
+  const std::string repaired = ply("repaired.ply", "0 0 0\n1 0 0\n0 1 0\n-1 0 0\n0 -1 0\n",
+                                   "3 0 1 2\n3 0 3 4\n3 0 3 4\n3 1 1 2\n", 4);
+  EXPECT_FALSE(expect_read_as_the_polygon_path_reads(repaired).repairs.empty());
+
+  const auto refusal = [](const std::string& path) -> std::string {
+    try {
+      apps::read_triangle_mesh(path);
+    } catch (const apps::Io_error& e) {
+      EXPECT_EQ(e.kind(), apps::Io_error::Kind::unreadable_input);
+      return e.what();
+    }
+    return "";
+  };
+  const std::string far = ply("far.ply", "0 0 0\n1 0 0\n0 1 0\n", "3 0 1 2\n3 0 2 7\n", 2);
+  EXPECT_EQ(refusal(far), far + ": face 1 refers to vertex 7 but there are only 3");
+  const std::string not_finite = ply("not_finite.ply", "0 0 0\n1 0 0\nnan 1 0\n", "3 0 1 2\n", 1);
+  EXPECT_EQ(refusal(not_finite), not_finite + ": non-finite coordinate at vertex 2");
+  const std::string faceless = ply("faceless.ply", "0 0 0\n1 0 0\n0 1 0\n", "", 0);
+  EXPECT_EQ(refusal(faceless), faceless + ": no faces");
   fs::remove_all(folder);
 }
 
