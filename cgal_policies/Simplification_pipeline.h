@@ -102,9 +102,20 @@ class Simplification_pipeline {
             keeps_input_as_cut() ? std::optional<Mesh>(mesh) : std::nullopt;
         internal::Part_progress progress(m_options.progress, mesh.number_of_faces(),
                                          report.target_faces);
-        outcome = internal::run_partitioned(
-            mesh, report.target_faces, *cells, m_options.threads,
-            part_or_stitched_runner(mesh, input_as_cut, diagonal, progress, started));
+        const auto run_policy =
+            part_or_stitched_runner(mesh, input_as_cut, diagonal, progress, started);
+        if (internal::runs_on_flat_parts(mesh, m_options))
+          outcome = internal::run_flat_partitioned(
+              mesh, report.target_faces, *cells, m_options.threads,
+              [&](internal::Flat_part& part, std::size_t target) {
+                Simplification_options options = m_options;
+                options.progress = progress.of_part(part.triangles.size());
+                return internal::run_on_flat_part(part, target, options);
+              },
+              run_policy);
+        else
+          outcome = internal::run_partitioned(mesh, report.target_faces, *cells, m_options.threads,
+                                              run_policy);
       }
       if (!outcome) {
         report.parts = 1;

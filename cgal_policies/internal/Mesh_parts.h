@@ -93,12 +93,22 @@ void copy_corner_values(const std::vector<const CGAL::Surface_mesh<Point>*>& fro
   }
 }
 
-// The part of cell `c` of `mesh` (manifold, no garbage), `cell` giving each face's cell.
-// Without corner values when `with_values` is false (the input of a partitioned fit).
+// The faces of cell `c` of `mesh` (manifold, no garbage) as a part's soup, `cell` giving each
+// face's cell: one point per fan of a vertex's faces in the cell, numbered in the order of the
+// fans' first corners; per face, in the order of faces(mesh), its corners around
+// mesh.halfedge(f) as halfedges of `mesh` and as point numbers.
 template <class Point>
-CGAL::Surface_mesh<Point> mesh_part(const CGAL::Surface_mesh<Point>& mesh,
-                                    const std::vector<std::uint32_t>& cell, std::uint32_t c,
-                                    bool with_values = true) {
+struct Cell_soup {
+  using Halfedge = typename CGAL::Surface_mesh<Point>::Halfedge_index;
+  std::vector<std::array<Halfedge, 3>> corners;
+  std::vector<std::size_t> triangles;  // three point numbers a face
+  std::vector<Halfedge> fan_starts;    // of each point, the first corner of its fan
+  std::vector<char> locked;            // of each point: its vertex has faces in other cells
+};
+
+template <class Point>
+Cell_soup<Point> cell_soup(const CGAL::Surface_mesh<Point>& mesh,
+                           const std::vector<std::uint32_t>& cell, std::uint32_t c) {
   using Mesh = CGAL::Surface_mesh<Point>;
   using Halfedge = typename Mesh::Halfedge_index;
   const auto in_cell = [&](Halfedge h) {
@@ -126,17 +136,17 @@ CGAL::Surface_mesh<Point> mesh_part(const CGAL::Surface_mesh<Point>& mesh,
       g = before;
     }
   };
-  // Asked of each part vertex's origin after the cut, when its star's state is known.
+  // Asked of each point's vertex after the cut, when its star's state is known.
   const auto locked = [&](typename Mesh::Vertex_index v) {
     if (star[std::size_t(v)] == whole_star) return false;
     for (const Halfedge h : CGAL::halfedges_around_target(v, mesh))
       if (!mesh.is_border(h) && cell[std::size_t(mesh.face(h))] != c) return true;
     return false;
   };
-  // Part vertices by their fan's first corner, in the order of those corners' indices: a bit per
-  // halfedge of `mesh` marks the first corners, and a vertex's number is the count of marks
+  // Points by their fan's first corner, in the order of those corners' indices: a bit per
+  // halfedge of `mesh` marks the first corners, and a point's number is the count of marks
   // before its corner's.
-  std::vector<std::array<Halfedge, 3>> corners;
+  Cell_soup<Point> soup;
   std::vector<std::array<std::uint32_t, 3>> triangles;
   std::vector<std::uint64_t> is_start((mesh.num_halfedges() + 63) / 64, 0);
   for (const auto f : mesh.faces()) {
@@ -150,38 +160,50 @@ CGAL::Surface_mesh<Point> mesh_part(const CGAL::Surface_mesh<Point>& mesh,
       is_start[t[k] / 64] |= std::uint64_t(1) << (t[k] % 64);
       ++k;
     }
-    corners.push_back(face_corners);
+    soup.corners.push_back(face_corners);
     triangles.push_back(t);
   }
-  std::vector<std::uint32_t> starts;
   std::vector<std::uint32_t> starts_before(is_start.size());
   for (std::size_t w = 0; w < is_start.size(); ++w) {
-    starts_before[w] = std::uint32_t(starts.size());
+    starts_before[w] = std::uint32_t(soup.fan_starts.size());
     for (std::uint64_t bits = is_start[w]; bits != 0; bits &= bits - 1)
-      starts.push_back(std::uint32_t(64 * w + std::bitset<64>(~bits & (bits - 1)).count()));
+      soup.fan_starts.push_back(
+          Halfedge(std::uint32_t(64 * w + std::bitset<64>(~bits & (bits - 1)).count())));
   }
-  std::vector<Point> points;
-  points.reserve(starts.size());
-  for (const std::uint32_t start : starts)
-    points.push_back(mesh.point(mesh.target(Halfedge(start))));
-  std::vector<std::size_t> triangle_points;
-  triangle_points.reserve(3 * triangles.size());
+  soup.triangles.reserve(3 * triangles.size());
   for (const auto& t : triangles)
     for (const std::uint32_t start : t) {
       const std::uint64_t below = (std::uint64_t(1) << (start % 64)) - 1;
-      triangle_points.push_back(starts_before[start / 64] +
-                                std::bitset<64>(is_start[start / 64] & below).count());
+      soup.triangles.push_back(starts_before[start / 64] +
+                               std::bitset<64>(is_start[start / 64] & below).count());
     }
+  soup.locked.reserve(soup.fan_starts.size());
+  for (const Halfedge start : soup.fan_starts) soup.locked.push_back(locked(mesh.target(start)));
+  return soup;
+}
+
+// The part of cell `c` of `mesh` (manifold, no garbage), `cell` giving each face's cell.
+// Without corner values when `with_values` is false (the input of a partitioned fit).
+template <class Point>
+CGAL::Surface_mesh<Point> mesh_part(const CGAL::Surface_mesh<Point>& mesh,
+                                    const std::vector<std::uint32_t>& cell, std::uint32_t c,
+                                    bool with_values = true) {
+  using Mesh = CGAL::Surface_mesh<Point>;
+  const Cell_soup<Point> soup = cell_soup(mesh, cell, c);
+  std::vector<Point> points;
+  points.reserve(soup.fan_starts.size());
+  for (const auto start : soup.fan_starts) points.push_back(mesh.point(mesh.target(start)));
   Mesh part;
   std::size_t unused_points = 0;
   // Each fan is a vertex of its own, so the part is a clean mesh whenever `mesh` is one.
-  if (!build_clean_triangle_mesh(points, triangle_points, part, unused_points))
+  if (!build_clean_triangle_mesh(points, soup.triangles, part, unused_points))
     throw std::logic_error("mesh_part: the cell's faces are not a manifold mesh");
   add_part_vertex_maps(
-      part, [&](auto v) { return mesh.target(Halfedge(starts[std::size_t(v)])); }, locked);
+      part, [&](auto v) { return mesh.target(soup.fan_starts[std::size_t(v)]); },
+      [&](auto v) { return bool(soup.locked[std::size_t(v)]); });
   if (with_values)
-    copy_corner_values(std::vector<const Mesh*>(corners.size(), &mesh), corners, triangle_points,
-                       part);
+    copy_corner_values(std::vector<const Mesh*>(soup.corners.size(), &mesh), soup.corners,
+                       soup.triangles, part);
   return part;
 }
 

@@ -236,7 +236,7 @@ CGAL::Surface_mesh<Point> streamed_part(const std::vector<Point>& points,
   }
   add_part_vertex_maps(
       part, [&](auto v) { return typename Mesh::Vertex_index(origin[std::size_t(v)]); },
-      [&](auto o) { return vertex_cell[std::size_t(o)] == kCutCell; });
+      [&](auto v) { return vertex_cell[origin[std::size_t(v)]] == kCutCell; });
   add_streamed_corner_values(part, origin, cell, kinds);
   return part;
 }

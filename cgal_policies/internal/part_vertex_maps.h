@@ -26,7 +26,7 @@ find_vertex_map(const CGAL::Surface_mesh<Point>& mesh, const std::string& name) 
   return found.first;
 }
 
-// Adds both maps to `part`: each vertex v stands for origin_of(v), locked when locked(origin).
+// Adds both maps to `part`: each vertex v stands for origin_of(v), locked when locked(v).
 template <class Point, class OriginOf, class Locked>
 void add_part_vertex_maps(CGAL::Surface_mesh<Point>& part, const OriginOf& origin_of,
                           const Locked& locked) {
@@ -35,7 +35,7 @@ void add_part_vertex_maps(CGAL::Surface_mesh<Point>& part, const OriginOf& origi
   auto origin = part.template add_property_map<Vertex, Vertex>(kOriginVertexMap).first;
   for (const Vertex v : part.vertices()) {
     origin[v] = origin_of(v);
-    lock[v] = locked(origin[v]);
+    lock[v] = locked(v);
   }
 }
 

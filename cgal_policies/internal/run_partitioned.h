@@ -6,6 +6,7 @@
 #ifndef CGAL_POLICIES_INTERNAL_RUN_PARTITIONED_H
 #define CGAL_POLICIES_INTERNAL_RUN_PARTITIONED_H
 
+#include <cgal_policies/internal/Flat_part.h>
 #include <cgal_policies/internal/Input_triangles.h>
 #include <cgal_policies/internal/Mesh_parts.h>
 #include <cgal_policies/internal/Policy_outcome.h>
@@ -66,21 +67,26 @@ void collapse_zero_length_edges(CGAL::Surface_mesh<Point>& mesh) {
   mesh.collect_garbage();
 }
 
-// Simplifies a part of a whole of `whole_faces` faces simplified to `target`, run_policy(part,
-// target) running the policy, and collects its garbage. Each part keeps kPartShare times its share
-// of the target besides one face per locked vertex, which it cannot collapse: the last collapses,
-// which set where the detail goes, are left to the run over the whole, ordered across the cuts,
-// and the cut does not take the faces of the part's inside. False when the part lost a locked
-// vertex.
+// The face count a part of `faces` faces, `locked` of its vertices locked, is simplified to in a
+// whole of `whole_faces` faces simplified to `target`: kPartShare times its share of the target
+// besides one face per locked vertex, which it cannot collapse. The last collapses, which set
+// where the detail goes, are left to the run over the whole, ordered across the cuts, and the cut
+// does not take the faces of the part's inside.
+inline std::size_t part_target(std::size_t faces, std::size_t locked, std::size_t target,
+                               std::size_t whole_faces) {
+  const double share = std::min(1.0, kPartShare * double(target) / double(whole_faces));
+  return std::min<std::size_t>(faces, std::size_t(std::llround(share * double(faces))) + locked);
+}
+
+// Simplifies a part of a whole of `whole_faces` faces simplified to `target` to its part_target,
+// run_policy(part, target) running the policy, and collects its garbage. False when the part
+// lost a locked vertex.
 template <class Point, class RunPolicy>
 bool simplify_part(CGAL::Surface_mesh<Point>& part, std::size_t target, std::size_t whole_faces,
                    const RunPolicy& run_policy) {
   if (part.is_empty()) return true;
-  const double share = std::min(1.0, kPartShare * double(target) / double(whole_faces));
   const std::size_t locked = locked_vertex_count(part);
-  run_policy(part, std::min<std::size_t>(
-                       part.number_of_faces(),
-                       std::size_t(std::llround(share * double(part.number_of_faces()))) + locked));
+  run_policy(part, part_target(part.number_of_faces(), locked, target, whole_faces));
   part.collect_garbage();
   return locked_vertex_count(part) == locked;
 }
@@ -120,6 +126,30 @@ std::optional<Policy_outcome> run_partitioned(CGAL::Surface_mesh<Point>& mesh, s
   return run_parts(
       cells.size(), mesh.number_of_faces(), mesh.number_of_vertices(), target, threads,
       [&](std::size_t c) { return mesh_part(mesh, cell, std::uint32_t(c)); }, run_policy, mesh);
+}
+
+// run_partitioned for the flat-array engines on a mesh without corner values: the parts kept
+// as arrays (Flat_part.h), run_on_part(part, target) running the policy on each, then stitched
+// into `mesh` and simplified to `target` by run_policy(mesh, target). The same result as
+// run_partitioned with those engines; no part loses a locked vertex (the engines refuse it).
+template <class Point, class RunOnPart, class RunPolicy>
+Policy_outcome run_flat_partitioned(CGAL::Surface_mesh<Point>& mesh, std::size_t target,
+                                    const Spatial_cells& cells, std::size_t threads,
+                                    const RunOnPart& run_on_part, const RunPolicy& run_policy) {
+  const std::vector<std::uint32_t> cell = face_cells(mesh, cells, threads);
+  const std::size_t whole_faces = mesh.number_of_faces();
+  std::vector<Flat_part> parts(cells.size());
+  for_each_in_parallel(parts.size(), threads, [&](std::size_t c) {
+    parts[c] = flat_part(mesh, cell, std::uint32_t(c));
+    const std::size_t faces = parts[c].triangles.size();
+    if (faces == 0) return;
+    const std::size_t locked =
+        std::size_t(std::count(parts[c].locked.begin(), parts[c].locked.end(), char(true)));
+    run_on_part(parts[c], part_target(faces, locked, target, whole_faces));
+  });
+  mesh = stitch_flat_parts<Point>(parts, mesh.number_of_vertices());
+  parts.clear();
+  return run_policy(mesh, target);
 }
 
 // Adds the moves and flips of `from` to `to`; the rounds are the caller's to count.

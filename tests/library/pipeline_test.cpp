@@ -15,9 +15,13 @@
 #include <cgal_policies/Corner_attribute_carrier.h>
 #include <cgal_policies/Face_count_stop_predicate.h>
 #include <cgal_policies/Fast_threshold_simplifier.h>
+#include <cgal_policies/internal/Flat_mesh_copy.h>
+#include <cgal_policies/internal/Flat_part.h>
 #include <cgal_policies/internal/Mesh_parts.h>
 #include <cgal_policies/internal/Streamed_corners.h>
+#include <cgal_policies/internal/plane_quadrics.h>
 #include <cgal_policies/internal/raw_mesh_file.h>
+#include <cgal_policies/internal/run_flat_array_policies.h>
 #include <cgal_policies/internal/run_partitioned.h>
 
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
@@ -751,6 +755,50 @@ TEST(MeshParts, StitchingTheCutPartsGivesTheMeshBack) {
   EXPECT_TRUE(corner_values(whole) == corner_values(sphere));
 }
 
+// A part kept as arrays for the flat-array engines is the part mesh as those engines read it:
+// the same points, faces, border, locks and origins in the same order, and the same quadrics, on
+// a closed mesh and on one with a border, each cut in four.
+TEST(FlatParts, AreThePartMeshesAsTheEnginesReadThem) {
+  namespace internal = cgal_policies::internal;
+  constexpr double kBorderWeight = 1000;
+  for (const Mesh& mesh : {loop_sphere(3), flat_grid(12)}) {
+    const internal::Spatial_cells cells(internal::face_centroids(mesh, 1), 4);
+    const std::vector<std::uint32_t> cell = internal::face_cells(mesh, cells, 1);
+    std::size_t locked = 0, border = 0;
+    for (std::uint32_t c = 0; c < cells.size(); ++c) {
+      const internal::Flat_part flat = internal::flat_part(mesh, cell, c);
+      Mesh part = internal::mesh_part(mesh, cell, c);
+      const auto origin =
+          internal::find_vertex_map<Mesh::Vertex_index>(part, internal::kOriginVertexMap);
+      std::vector<std::uint32_t> origins;
+      for (const auto v : part.vertices()) origins.push_back(std::uint32_t((*origin)[v]));
+      auto quadrics = get(CGAL::dynamic_vertex_property_t<internal::Quadric>(), part);
+      internal::accumulate_vertex_quadrics(part, part.points(), cgal_policies::Face_weighting::unit,
+                                           kBorderWeight, quadrics, quadrics);
+      const std::vector<internal::Fast_threshold_vertex> vertices =
+          internal::fast_threshold_vertices(flat, kBorderWeight);
+      const internal::Flat_mesh_copy<Mesh, internal::No_corner_values> copy(part);
+      EXPECT_EQ(flat.points, copy.points);
+      EXPECT_EQ(flat.triangles, copy.triangles);
+      EXPECT_EQ(flat.border, copy.border);
+      EXPECT_EQ(flat.locked, copy.locked);
+      EXPECT_EQ(flat.origin, origins);
+      ASSERT_EQ(vertices.size(), copy.vertices.size());
+      for (std::size_t i = 0; i < vertices.size(); ++i) {
+        const internal::Quadric expected = get(quadrics, copy.vertices[i]);
+        EXPECT_EQ(vertices[i].quadric.linear_part(), expected.linear_part());
+        EXPECT_EQ(vertices[i].quadric.offset(), expected.offset());
+        EXPECT_EQ(vertices[i].quadric.evaluate(Eigen::Vector3d::Zero()),
+                  expected.evaluate(Eigen::Vector3d::Zero()));
+      }
+      locked += std::size_t(std::count(flat.locked.begin(), flat.locked.end(), char(true)));
+      border += std::size_t(std::count(flat.border.begin(), flat.border.end(), char(true)));
+    }
+    EXPECT_GT(locked, 0u);
+    EXPECT_EQ(border > locked, !CGAL::is_closed(mesh));  // the grid's own border besides the cuts
+  }
+}
+
 // The clean mesh's checks around each point, on two cores: the same mesh, halfedge for halfedge,
 // and the same refusals, wherever the offending point falls among the cores' blocks of points.
 TEST(CleanTriangleMesh, TwoCoresBuildAndRefuseAsOne) {
@@ -934,6 +982,45 @@ TEST_P(PartitionedRun, KeepsTheInvariantsAndGivesTheSameBytesOnAnyThreadCount) {
 INSTANTIATE_TEST_SUITE_P(Policies, PartitionedRun,
                          testing::Values("lt", "classic", "fast", "flat-lt"),
                          [](const auto& test) { return identifier(test.param); });
+
+// A partitioned run of fast, and of flat-lt after fast's prepass, on parts kept as arrays writes
+// the bytes of the same run on the part meshes, on a closed mesh and on one with a border.
+TEST(FlatParts, RunTheEnginesAsThePartMeshesDo) {
+  namespace internal = cgal_policies::internal;
+  for (const Mesh& input : {loop_sphere(5), flat_grid(100)}) {
+    const internal::Spatial_cells cells(internal::face_centroids(input, 1), 4);
+    const std::size_t target = input.number_of_faces() / 50;
+    for (const std::string policy : {"fast", "flat-lt"}) {
+      cgal_policies::Simplification_options options = policy_alone(policy, target);
+      options.prepass_factor = policy == "fast" ? 0 : 5;
+      ASSERT_TRUE(internal::runs_on_flat_parts(input, options));
+      // What the pipeline runs on a part mesh and on the stitched whole.
+      const auto on_a_mesh = [&](Mesh& m, std::size_t t) {
+        const std::size_t coarse = options.prepass_faces(t);
+        if (coarse == 0) return internal::run_fast<Point>(m, t, options, nullptr);
+        if (m.number_of_faces() > coarse) internal::run_fast<Point>(m, coarse, options, nullptr);
+        return internal::run_flat_lt<Point>(m, t, options, nullptr);
+      };
+      Mesh meshes = input;
+      ASSERT_TRUE(internal::run_partitioned(meshes, target, cells, 1, on_a_mesh));
+      Mesh arrays = input;
+      const cgal_policies::Stop_reason stop =
+          internal::run_flat_partitioned(
+              arrays, target, cells, 2,
+              [&](internal::Flat_part& part, std::size_t t) {
+                return internal::run_on_flat_part(part, t, options);
+              },
+              on_a_mesh)
+              .stop_reason;
+      EXPECT_EQ(stop, cgal_policies::Stop_reason::target_reached);
+      EXPECT_LE(arrays.number_of_faces(), target);
+      EXPECT_GE(arrays.number_of_faces() + 2, target);
+      EXPECT_TRUE(written_bytes(arrays, "arrays_" + policy) ==
+                  written_bytes(meshes, "meshes_" + policy))
+          << policy << " on " << input.number_of_faces() << " faces";
+    }
+  }
+}
 
 // The fast prepass (Simplification_options::prepass_factor): the run is fast down to K times the
 // target, then the policy from there, and its progress rises from the input's face count.
