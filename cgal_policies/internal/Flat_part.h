@@ -11,6 +11,8 @@
 #include <cgal_policies/internal/Fast_threshold_engine.h>
 #include <cgal_policies/internal/Lindstrom_turk_engine.h>
 #include <cgal_policies/internal/Mesh_parts.h>
+#include <cgal_policies/internal/clean_triangle_mesh.h>
+#include <cgal_policies/internal/mesh_geometry.h>
 #include <cgal_policies/internal/plane_quadrics.h>
 
 #include <Eigen/Core>
@@ -145,22 +147,14 @@ void take_engine_result(Flat_mesh& flat, Flat_part& part) {
 template <class Point>
 CGAL::Surface_mesh<Point> stitch_flat_parts(const std::vector<Flat_part>& parts,
                                             std::size_t whole_vertices) {
-  constexpr std::size_t kNew = std::size_t(-1);
-  std::vector<std::size_t> shared(whole_vertices, kNew);
+  std::vector<std::size_t> shared(whole_vertices, kNotStitched);
   std::vector<Point> points;
   std::vector<std::size_t> triangles;
   for (const Flat_part& part : parts) {
     std::vector<std::size_t> index(part.points.size());
-    for (std::size_t v = 0; v < part.points.size(); ++v) {
-      std::size_t& slot = shared[part.origin[v]];
-      if (part.locked[v] && slot != kNew) {
-        index[v] = slot;
-        continue;
-      }
-      index[v] = points.size();
-      if (part.locked[v]) slot = points.size();
-      points.push_back(to_point<Point>(part.points[v]));
-    }
+    for (std::size_t v = 0; v < part.points.size(); ++v)
+      index[v] = stitched_point(part.origin[v], bool(part.locked[v]),
+                                to_point<Point>(part.points[v]), shared, points);
     // A face read from its halfedge's target: (v1, v2, v0).
     for (const std::array<int, 3>& t : part.triangles)
       for (const int j : {1, 2, 0}) triangles.push_back(index[std::size_t(t[std::size_t(j)])]);

@@ -207,14 +207,29 @@ CGAL::Surface_mesh<Point> mesh_part(const CGAL::Surface_mesh<Point>& mesh,
   return part;
 }
 
+// Not yet among the stitched points (stitched_point).
+constexpr std::size_t kNotStitched = std::size_t(-1);
+
+// The index among the stitched `points` of a part vertex at `point` that stands for the whole's
+// vertex `origin`: a locked vertex's point is added once for every part that has it (`shared`
+// keeps it by origin, kNotStitched until then), any other vertex's anew.
+template <class Point>
+std::size_t stitched_point(std::size_t origin, bool locked, const Point& point,
+                           std::vector<std::size_t>& shared, std::vector<Point>& points) {
+  std::size_t& slot = shared[origin];
+  if (locked && slot != kNotStitched) return slot;
+  if (locked) slot = points.size();
+  points.push_back(point);
+  return points.size() - 1;
+}
+
 // The parts put back together: the vertices of every part (their origin shared where they are
 // locked) and their faces, part after part, with their corner values.
 template <class Point>
 CGAL::Surface_mesh<Point> stitch_parts(const std::vector<CGAL::Surface_mesh<Point>>& parts,
                                        std::size_t whole_vertices) {
   using Mesh = CGAL::Surface_mesh<Point>;
-  constexpr std::size_t kNew = std::size_t(-1);
-  std::vector<std::size_t> shared(whole_vertices, kNew);
+  std::vector<std::size_t> shared(whole_vertices, kNotStitched);
   std::vector<Point> points;
   std::vector<std::size_t> triangles;
   std::vector<std::array<CGAL::SM_Halfedge_index, 3>> corners;
@@ -222,18 +237,10 @@ CGAL::Surface_mesh<Point> stitch_parts(const std::vector<CGAL::Surface_mesh<Poin
   for (const Mesh& m : parts) {
     const auto lock = find_vertex_map<bool>(m, kLockedVertexMap);
     const auto origin = find_vertex_map<CGAL::SM_Vertex_index>(m, kOriginVertexMap);
-    std::vector<std::size_t> index(m.num_vertices(), kNew);
-    for (const auto v : m.vertices()) {
-      std::size_t& slot = shared[std::size_t((*origin)[v])];
-      const bool is_locked = (*lock)[v];
-      if (is_locked && slot != kNew) {
-        index[std::size_t(v)] = slot;
-        continue;
-      }
-      index[std::size_t(v)] = points.size();
-      if (is_locked) slot = points.size();
-      points.push_back(m.point(v));
-    }
+    std::vector<std::size_t> index(m.num_vertices(), kNotStitched);
+    for (const auto v : m.vertices())
+      index[std::size_t(v)] =
+          stitched_point(std::size_t((*origin)[v]), (*lock)[v], m.point(v), shared, points);
     for (const auto f : m.faces()) {
       std::array<CGAL::SM_Halfedge_index, 3> c;
       int k = 0;
