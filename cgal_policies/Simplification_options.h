@@ -30,13 +30,13 @@
 //   smoothing             Smoothing_options (default: none)
 //   fit                   then fit the output to the input both ways (Two_sided_fitter), within the
 //                         run's bound when it has one (default below)
-//   fit_options           the fitter's rounds, samples and steps (its max_normal_angle_deg and
-//                         tolerance come from this struct)
+//   fit_options           the fitter's rounds, samples and steps (its max_normal_angle_deg,
+//                         tolerance and threads come from this struct)
 //   parts                 cells of a partitioned run (docs/scale.md), rounded down to a power
 //                         of two; 0: one per kFacesPerPart input faces (default), 1: none. A
 //                         run with on_collapse runs whole; a bound holds as in a whole run
-//   threads               cores for the parts, 0: all of them (default); the output is the same
-//                         for every count
+//   threads               cores for the parts and the fit's matching, 0: all of them (default);
+//                         the output is the same for every count
 //   progress              called now and then with the pass running, how far it is in [0, 1], and
 //                         the face count; may be empty. The parts of a partitioned run call it
 //                         from their threads, one call at a time, with the whole's face count

@@ -573,6 +573,7 @@ class Simplification_pipeline {
     Two_sided_fit_options fit = m_options.fit_options;
     fit.max_normal_angle_deg = m_options.max_normal_angle_deg;
     fit.tolerance = report.bound;
+    fit.threads = m_options.threads;
     return fit;
   }
 

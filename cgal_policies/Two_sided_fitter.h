@@ -30,6 +30,8 @@
 //                         (default 90)
 //   min_input_samples     the input is sampled at least this densely, >= 1 (default 100000)
 //   tolerance             >= 0, a fraction of the input's bounding-box diagonal; 0: unbounded
+//   threads               cores that match the samples, 0: all of them (default 1); the fit is the
+//                         same for every count
 // The input must outlive the fitter; output and input are triangle meshes of the same type, their
 // points read through their vertex_point maps. Deterministic: the same meshes give the same bytes.
 // fit() may be told which vertices must stay where they are (a mesh's texture seams, say;

@@ -1,18 +1,21 @@
 // The matches of one round of the fitting pass, both ways (docs/fitting.md): each input sample's
 // nearest output point, found by a walk from the face it was on last round or by a bounding-volume
-// hierarchy of the output, and samples of every output face with their nearest input points.
+// hierarchy of the output, and samples of every output face with their nearest input points. Each
+// match depends on its sample alone, so the matches are the same on any number of cores.
 #ifndef CGAL_POLICIES_INTERNAL_FIT_MATCHING_H
 #define CGAL_POLICIES_INTERNAL_FIT_MATCHING_H
 
 #include <cgal_policies/internal/Fit_input.h>
 #include <cgal_policies/internal/Fit_output_mesh.h>
 #include <cgal_policies/internal/Fit_output_tree.h>
+#include <cgal_policies/internal/for_each_in_parallel.h>
 #include <cgal_policies/internal/surface_samples.h>
 #include <cgal_policies/internal/triangle_closest_point.h>
 #include <cgal_policies/internal/triangle_distance.h>
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -21,6 +24,9 @@ namespace internal {
 
 constexpr std::size_t kFitWalkSteps = 32;
 constexpr int kFitOutputLevel = 3;  // samples per output face: its square
+// Input samples and output faces matched by one task: enough to outweigh a task's cost.
+constexpr std::size_t kFitSamplesPerTask = 2048;
+constexpr std::size_t kFitFacesPerTask = 256;
 
 template <typename TriangleMesh>
 class Fit_matching {
@@ -41,8 +47,10 @@ class Fit_matching {
     Eigen::Vector3d target;
   };
 
-  Fit_matching(std::size_t input_samples, std::size_t output_faces)
-      : m_sample_face(input_samples, kFitNoFace),
+  // Matches on up to `threads` cores (0: all of them).
+  Fit_matching(std::size_t input_samples, std::size_t output_faces, std::size_t threads)
+      : m_threads(threads),
+        m_sample_face(input_samples, kFitNoFace),
         m_face_hint(output_faces, Reference_sample::kNoTriangle),
         m_output_sample_hint(output_faces * kFitOutputLevel * kFitOutputLevel,
                              Reference_sample::kNoTriangle) {}
@@ -71,17 +79,40 @@ class Fit_matching {
   const std::vector<std::size_t>& face_hints() const { return m_face_hint; }
 
  private:
-  // Each input sample's nearest output point: a walk from last round's face, or the tree.
+  // Each input sample's nearest output point: a walk from last round's face; the tree, built only
+  // when a sample needs it, for a sample without a face or whose walk lost its way.
   void match_input_samples(const Output_mesh& mesh, const std::vector<Fit_input_sample>& samples) {
-    Fit_output_tree<TriangleMesh> tree(mesh);
     m_input_matches.resize(samples.size());
-    for (std::size_t s = 0; s < samples.size(); ++s) {
-      const Eigen::Vector3d& p = samples[s].point;
-      std::uint32_t f = m_sample_face[s];
-      if (f == kFitNoFace || !walk_to_nearest(mesh, p, f)) f = tree.nearest(p);
-      m_sample_face[s] = f;
-      m_input_matches[s] = closest_match(mesh, p, f);
-    }
+    std::vector<char> lost(samples.size(), 0);
+    for_each_block(samples.size(), kFitSamplesPerTask, m_threads,
+                   [&](std::size_t begin, std::size_t end) {
+                     for (std::size_t s = begin; s < end; ++s) {
+                       std::uint32_t f = m_sample_face[s];
+                       if (f == kFitNoFace || !walk_to_nearest(mesh, samples[s].point, f))
+                         lost[s] = 1;
+                       else
+                         settle(mesh, samples[s].point, s, f);
+                     }
+                   });
+    if (std::find(lost.begin(), lost.end(), char(1)) == lost.end()) return;
+    const Fit_output_tree<TriangleMesh> tree(mesh);
+    for_each_block(samples.size(), kFitSamplesPerTask, m_threads,
+                   [&](std::size_t begin, std::size_t end) {
+                     // The last answer bounds the next search: consecutive samples are mostly
+                     // neighbours.
+                     std::uint32_t near = kFitNoFace;
+                     for (std::size_t s = begin; s < end; ++s) {
+                       if (!lost[s]) continue;
+                       near = tree.nearest(samples[s].point, near);
+                       settle(mesh, samples[s].point, s, near);
+                     }
+                   });
+  }
+
+  // Sample s, at p, matched to its nearest point on face f.
+  void settle(const Output_mesh& mesh, const Eigen::Vector3d& p, std::size_t s, std::uint32_t f) {
+    m_sample_face[s] = f;
+    m_input_matches[s] = closest_match(mesh, p, f);
   }
 
   // Walks from face f across edges while the distance to p drops; false when it has not stopped
@@ -110,33 +141,50 @@ class Fit_matching {
     return {f, b, (b[0] * t.points[0] + b[1] * t.points[1] + b[2] * t.points[2] - p).norm()};
   }
 
+  // Where an output face is sampled, in barycentric coordinates.
+  static const std::vector<Eigen::Vector3d>& face_grid() {
+    static const std::vector<Eigen::Vector3d> grid = barycentric_grid(kFitOutputLevel);
+    return grid;
+  }
+
   // Samples of every output face and their nearest input points.
   std::vector<Output_match> match_output_samples(const Output_mesh& mesh,
                                                  const Fit_input<TriangleMesh>& input) {
-    static const std::vector<Eigen::Vector3d> grid = barycentric_grid(kFitOutputLevel);
+    const std::vector<Eigen::Vector3d>& grid = face_grid();
     std::vector<Output_match> matched;
     const double total_area = mesh.area();
     if (!(total_area > 0)) return matched;
     seed_face_hints(input.samples());
-    matched.reserve(mesh.face_count() * grid.size());
-    for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
-      const Indexed_triangle t = mesh.triangle(f);
-      const double w = triangle_area(t) / (total_area * double(grid.size()));
-      for (std::size_t g = 0; g < grid.size(); ++g) {
-        const Eigen::Vector3d& b = grid[g];
-        const Eigen::Vector3d y = b[0] * t.points[0] + b[1] * t.points[1] + b[2] * t.points[2];
-        // The sample's own match of the last round bounds the search tightly, the vertices having
-        // moved little since; in the first round, the previous sample's of the face.
-        std::size_t& hint = m_output_sample_hint[f * grid.size() + g];
-        const Reference_sample near = input.surface().nearest(
-            y, hint != Reference_sample::kNoTriangle ? hint : m_face_hint[f]);
-        hint = m_face_hint[f] = near.triangle;
-        const Triangle_corners& q = input.surface().corners(near.triangle);
-        const Eigen::Vector3d c = closest_barycentric(y, q[0], q[1], q[2]);
-        matched.push_back({f, b, w, near.distance, c[0] * q[0] + c[1] * q[1] + c[2] * q[2]});
-      }
-    }
+    matched.resize(mesh.face_count() * grid.size());
+    for_each_block(mesh.face_count(), kFitFacesPerTask, m_threads,
+                   [&](std::size_t begin, std::size_t end) {
+                     for (std::size_t f = begin; f < end; ++f)
+                       match_face_samples(mesh, input, std::uint32_t(f), total_area,
+                                          &matched[f * grid.size()]);
+                   });
     return matched;
+  }
+
+  // The samples of output face f of a mesh of that area and their nearest input points, into
+  // `matched`.
+  void match_face_samples(const Output_mesh& mesh, const Fit_input<TriangleMesh>& input,
+                          std::uint32_t f, double total_area, Output_match* matched) {
+    const std::vector<Eigen::Vector3d>& grid = face_grid();
+    const Indexed_triangle t = mesh.triangle(f);
+    const double w = triangle_area(t) / (total_area * double(grid.size()));
+    for (std::size_t g = 0; g < grid.size(); ++g) {
+      const Eigen::Vector3d& b = grid[g];
+      const Eigen::Vector3d y = b[0] * t.points[0] + b[1] * t.points[1] + b[2] * t.points[2];
+      // The sample's own match of the last round bounds the search tightly, the vertices having
+      // moved little since; in the first round, the previous sample's of the face.
+      std::size_t& hint = m_output_sample_hint[f * grid.size() + g];
+      const Reference_sample near =
+          input.surface().nearest(y, hint != Reference_sample::kNoTriangle ? hint : m_face_hint[f]);
+      hint = m_face_hint[f] = near.triangle;
+      const Triangle_corners& q = input.surface().corners(near.triangle);
+      const Eigen::Vector3d c = closest_barycentric(y, q[0], q[1], q[2]);
+      matched[g] = {f, b, w, near.distance, c[0] * q[0] + c[1] * q[1] + c[2] * q[2]};
+    }
   }
 
   // In the first round a face has no input triangle of its own yet: its walks start from the
@@ -149,6 +197,7 @@ class Fit_matching {
     }
   }
 
+  std::size_t m_threads;
   std::vector<std::uint32_t> m_sample_face;
   std::vector<Input_match> m_input_matches;
   std::vector<std::size_t> m_face_hint;

@@ -1,6 +1,5 @@
-// The output's faces in a bounding-volume hierarchy, built at the first query: where the fitting
-// pass matches an input sample that has no output face yet, or whose walk lost its way
-// (docs/fitting.md).
+// The output's faces in a bounding-volume hierarchy: where the fitting pass matches an input sample
+// that has no output face yet, or whose walk lost its way (docs/fitting.md).
 #ifndef CGAL_POLICIES_INTERNAL_FIT_OUTPUT_TREE_H
 #define CGAL_POLICIES_INTERNAL_FIT_OUTPUT_TREE_H
 
@@ -10,7 +9,6 @@
 #include <Eigen/Core>
 
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 namespace cgal_policies {
@@ -19,31 +17,29 @@ namespace internal {
 template <typename TriangleMesh>
 class Fit_output_tree {
  public:
-  // The faces of `mesh` as they are at the first query.
-  explicit Fit_output_tree(const Fit_output_mesh<TriangleMesh>& mesh) : m_mesh(&mesh) {}
+  // The faces of `mesh` as they are now.
+  explicit Fit_output_tree(const Fit_output_mesh<TriangleMesh>& mesh)
+      : m_mesh(&mesh), m_bvh(triangles_of(mesh)) {}
 
-  // The index of the face nearest p, the lowest among equals.
-  std::uint32_t nearest(const Eigen::Vector3d& p) {
-    if (!m_bvh) build();
-    // The last answer bounds the search from the start: consecutive samples are mostly neighbours.
+  // The index of the face nearest p, the lowest among equals, whatever `near` is: a face near p
+  // (kFitNoFace when none is known), whose distance bounds the search from the start.
+  std::uint32_t nearest(const Eigen::Vector3d& p, std::uint32_t near) const {
     Triangle_bvh::Hit start;
-    if (m_last != Triangle_bvh::kNone) start = {m_last, m_mesh->squared_distance(p, m_last)};
-    m_last = m_bvh->nearest(p, start).triangle;
-    return m_last;
+    if (near != kFitNoFace) start = {near, m_mesh->squared_distance(p, near)};
+    return m_bvh.nearest(p, start).triangle;
   }
 
  private:
-  void build() {
+  static std::vector<Triangle_corners> triangles_of(const Fit_output_mesh<TriangleMesh>& mesh) {
     std::vector<Triangle_corners> triangles;
-    triangles.reserve(m_mesh->face_count());
-    for (std::uint32_t f = 0; f < m_mesh->face_count(); ++f)
-      triangles.push_back(m_mesh->triangle(f).points);
-    m_bvh.emplace(triangles);
+    triangles.reserve(mesh.face_count());
+    for (std::uint32_t f = 0; f < mesh.face_count(); ++f)
+      triangles.push_back(mesh.triangle(f).points);
+    return triangles;
   }
 
   const Fit_output_mesh<TriangleMesh>* m_mesh;
-  std::optional<Triangle_bvh> m_bvh;
-  std::uint32_t m_last = Triangle_bvh::kNone;
+  Triangle_bvh m_bvh;
 };
 
 }  // namespace internal

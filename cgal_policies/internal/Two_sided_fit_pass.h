@@ -48,7 +48,7 @@ class Two_sided_fit_pass {
         m_options(options),
         m_mesh(tm),
         m_mover(m_mesh, input.border(), input.surface().diagonal(), pinned, options.trust_fraction),
-        m_matching(input.samples().size(), m_mesh.face_count()) {
+        m_matching(input.samples().size(), m_mesh.face_count(), options.threads) {
     if (m_options.tolerance > 0) {
       CGAL_precondition(input.mesh() != nullptr);
       m_bounded =

@@ -29,6 +29,27 @@ inline std::size_t thread_count(std::size_t threads) {
   return threads > 0 ? threads : (std::max)(1u, std::thread::hardware_concurrency());
 }
 
+#ifdef CGAL_POLICIES_WITH_TBB
+// Marks this thread, while it lives, as running a body of for_each_in_parallel.
+class Inside_parallel_body {
+ public:
+  Inside_parallel_body() : m_outer(flag()) { flag() = true; }
+  ~Inside_parallel_body() { flag() = m_outer; }
+  Inside_parallel_body(const Inside_parallel_body&) = delete;
+  Inside_parallel_body& operator=(const Inside_parallel_body&) = delete;
+
+  static bool now() { return flag(); }
+
+ private:
+  static bool& flag() {
+    static thread_local bool inside = false;
+    return inside;
+  }
+
+  bool m_outer;
+};
+#endif
+
 template <class Body>
 void for_each_in_parallel(std::size_t n, std::size_t threads, const Body& body) {
   if (threads == 1 || n <= 1) {  // in place: no arena or thread for the calls made on one core
@@ -36,13 +57,18 @@ void for_each_in_parallel(std::size_t n, std::size_t threads, const Body& body) 
     return;
   }
 #ifdef CGAL_POLICIES_WITH_TBB
-  tbb::task_arena arena(threads == 0 ? tbb::task_arena::automatic : int(threads));
-  arena.execute([&] {
+  const auto run = [&] {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1),
                       [&](const tbb::blocked_range<std::size_t>& range) {
+                        const Inside_parallel_body inside;
                         for (std::size_t i = range.begin(); i != range.end(); ++i) body(i);
                       });
-  });
+  };
+  // A call from a body runs in that body's arena, whose cores are already counted: a core whose
+  // own bodies are done then takes part of the nested work rather than wait.
+  if (Inside_parallel_body::now()) return run();
+  tbb::task_arena arena(threads == 0 ? tbb::task_arena::automatic : int(threads));
+  arena.execute(run);
 #else
   threads = thread_count(threads);
   std::atomic<std::size_t> next{0};
@@ -86,12 +112,20 @@ void for_each_costliest_first(const std::vector<std::size_t>& costs, std::size_t
   });
 }
 
-// body(i) for every i < n as for_each_in_parallel runs them, `block` consecutive i to a task: for
-// bodies so cheap that a task each would cost more than they do.
+// body(begin, end) for the ranges of `block` consecutive i < n, as for_each_in_parallel runs them:
+// for bodies so cheap that a task each would cost more than they do, or that carry a hint from
+// one i to the next.
+template <class Body>
+void for_each_block(std::size_t n, std::size_t block, std::size_t threads, const Body& body) {
+  for_each_in_parallel((n + block - 1) / block, threads,
+                       [&](std::size_t b) { body(b * block, (std::min)(n, (b + 1) * block)); });
+}
+
+// body(i) for every i < n, `block` consecutive i to a task (for_each_block).
 template <class Body>
 void for_each_in_blocks(std::size_t n, std::size_t block, std::size_t threads, const Body& body) {
-  for_each_in_parallel((n + block - 1) / block, threads, [&](std::size_t b) {
-    for (std::size_t i = b * block; i < (std::min)(n, (b + 1) * block); ++i) body(i);
+  for_each_block(n, block, threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) body(i);
   });
 }
 

@@ -175,6 +175,25 @@ TEST(TwoSidedFitter, TwoFitsOfTheSameMeshesGiveTheSamePoints) {
   for (auto v : vertices(first)) EXPECT_EQ(first.point(v), second.point(v));
 }
 
+// Enough samples and faces for several tasks of each kind of match (kFitSamplesPerTask,
+// kFitFacesPerTask).
+TEST(TwoSidedFitter, MatchesOnTwoCoresAsOnOne) {
+  const Mesh input = loop_sphere(3);
+  const Mesh before = scaled(loop_sphere(2), 0.9);
+  Two_sided_fit_options options = few_samples();
+  options.min_input_samples = 20000;
+  Mesh first = before, second = before;
+  const Two_sided_fit_report one = Two_sided_fitter<Mesh>(input, options).fit(first);
+  options.threads = 2;
+  const Two_sided_fit_report two = Two_sided_fitter<Mesh>(input, options).fit(second);
+  EXPECT_EQ(one.rounds, two.rounds);
+  EXPECT_EQ(one.moves, two.moves);
+  EXPECT_EQ(one.flips, two.flips);
+  EXPECT_GT(one.moves, 0u);
+  for (auto v : vertices(first)) EXPECT_EQ(first.point(v), second.point(v));
+  for (auto h : halfedges(first)) EXPECT_EQ(target(h, first), target(h, second));
+}
+
 // A 4 x 4 grid of points in z = 0 but for (1, 1), raised; `diagonal` splits the middle square
 // from (1, 1) to (2, 2) when true (as every other square), from (2, 1) to (1, 2) when false.
 Mesh raised_grid(bool diagonal) {

@@ -1088,7 +1088,7 @@ TEST(Prepass, KeepsWhatAPartitionedRunKeeps) {
 
 // The fit by cells pins the vertices on the cuts for half its rounds: its mean error stays within
 // 10% of the whole fit's on the bunny cut in four (measured 6%, docs/scale.md), and below the
-// unfitted run's.
+// unfitted run's; it writes the same bytes on one core and on two.
 TEST(PartitionedRun, FitsByCellsNearlyAsWellAsWhole) {
   SKIP_IF_REAL_MESHES_ARE_OFF();
   const Mesh input = apps::read_triangle_mesh(data_file("bunny.obj"));
@@ -1097,9 +1097,15 @@ TEST(PartitionedRun, FitsByCellsNearlyAsWellAsWhole) {
   options.parts = 4;
   apps::Pipeline(options).run(unfitted);
   options.fit = true;
+  options.threads = 1;
   Mesh by_cells = input;
   const cgal_policies::Simplification_report report = apps::Pipeline(options).run(by_cells);
   EXPECT_EQ(report.fit.rounds, 4);
+  // Two cores: the cells' fits at once, each matching on both cores once the other is done.
+  options.threads = 2;
+  Mesh on_two_cores = input;
+  apps::Pipeline(options).run(on_two_cores);
+  EXPECT_TRUE(written_bytes(by_cells, "one_core") == written_bytes(on_two_cores, "two_cores"));
   options.parts = 1;
   Mesh whole = input;
   apps::Pipeline(options).run(whole);
