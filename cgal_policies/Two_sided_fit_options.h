@@ -16,7 +16,7 @@ struct Two_sided_fit_options {
   std::size_t min_input_samples = 100000;  // the input is sampled at least this densely
   // > 0: bounded mode, a two-sided bound as a fraction of the input's diagonal
   double tolerance = 0;
-  std::size_t threads = 1;  // cores that match the samples, 0: all; the fit is the same for any
+  std::size_t threads = 1;  // cores that index and match, 0: all; the fit is the same for any
 };
 
 }  // namespace cgal_policies

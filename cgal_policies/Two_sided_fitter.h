@@ -30,8 +30,8 @@
 //                         (default 90)
 //   min_input_samples     the input is sampled at least this densely, >= 1 (default 100000)
 //   tolerance             >= 0, a fraction of the input's bounding-box diagonal; 0: unbounded
-//   threads               cores that match the samples, 0: all of them (default 1); the fit is the
-//                         same for every count
+//   threads               cores that index the input and match the samples, 0: all of them
+//                         (default 1); the fit is the same for every count
 // The input must outlive the fitter; output and input are triangle meshes of the same type, their
 // points read through their vertex_point maps. Deterministic: the same meshes give the same bytes.
 // fit() may be told which vertices must stay where they are (a mesh's texture seams, say;
@@ -63,14 +63,14 @@ class Two_sided_fitter {
  public:
   explicit Two_sided_fitter(const TriangleMesh& input,
                             const Two_sided_fit_options& options = Two_sided_fit_options())
-      : m_options(options), m_input(input) {
+      : m_options(options), m_input(input, options.threads) {
     check_options();
   }
 
   // The input given by its triangles (a cell of a larger input: the fit by cells); unbounded.
   explicit Two_sided_fitter(internal::Input_triangles input,
                             const Two_sided_fit_options& options = Two_sided_fit_options())
-      : m_options(options), m_input(std::move(input)) {
+      : m_options(options), m_input(std::move(input), options.threads) {
     CGAL_precondition(options.tolerance == 0);
     check_options();
   }

@@ -10,6 +10,7 @@
 #include <cgal_policies/internal/Fit_matching.h>
 #include <cgal_policies/internal/Fit_output_mesh.h>
 #include <cgal_policies/internal/Hausdorff_bounded_state.h>
+#include <cgal_policies/internal/for_each_in_parallel.h>
 #include <cgal_policies/internal/mesh_geometry.h>
 #include <cgal_policies/internal/surface_samples.h>
 #include <cgal_policies/internal/triangle_distance.h>
@@ -65,8 +66,12 @@ class Fit_flip_round {
     m_output_area = m_mesh->area();
     if (!(m_output_area > 0)) return;
     m_output_error.resize(m_mesh->face_count());
-    for (std::uint32_t f = 0; f < m_mesh->face_count(); ++f)
-      m_output_error[f] = output_error(m_mesh->triangle(f), m_matching->face_hints()[f]);
+    // Each face's own error, on the matching's cores; the flips then go one after the other.
+    for_each_in_blocks(
+        m_mesh->face_count(), kFitFacesPerTask, m_matching->threads(), [&](std::size_t f) {
+          m_output_error[f] =
+              output_error(m_mesh->triangle(std::uint32_t(f)), m_matching->face_hints()[f]);
+        });
     std::vector<halfedge_descriptor> candidates;
     for (auto e : edges(m_mesh->mesh()))
       if (!CGAL::is_border(e, m_mesh->mesh())) candidates.push_back(halfedge(e, m_mesh->mesh()));

@@ -19,17 +19,17 @@ namespace internal {
 template <typename TriangleMesh>
 class Fit_input {
  public:
-  // `input` must outlive this.
+  // `input` must outlive this. Its hierarchy is built on up to `threads` cores.
   // A tolerance of 0: every nearest point is the tree's, seeded by a walk (exact distances; a walk
   // alone may stop at a local minimum).
-  explicit Fit_input(const TriangleMesh& input)
+  Fit_input(const TriangleMesh& input, std::size_t threads)
       : m_mesh(&input),
         m_border(input, get(CGAL::vertex_point, input)),
-        m_surface(input, get(CGAL::vertex_point, input), 0.0, true) {}
+        m_surface(input, get(CGAL::vertex_point, input), 0.0, true, threads) {}
 
   // Without a mesh: no bounded fit (which certifies against the mesh).
-  explicit Fit_input(Input_triangles triangles)
-      : m_mesh(nullptr), m_border(triangles), m_surface(std::move(triangles), 0.0) {}
+  Fit_input(Input_triangles triangles, std::size_t threads)
+      : m_mesh(nullptr), m_border(triangles), m_surface(std::move(triangles), 0.0, threads) {}
 
   // Samples the input anew for an output of `output_faces` faces (sample_fit_input()).
   void resample(std::size_t output_faces, std::size_t min_input_samples) {

@@ -78,6 +78,9 @@ class Fit_matching {
   // An input triangle near each output face.
   const std::vector<std::size_t>& face_hints() const { return m_face_hint; }
 
+  // The cores it matches on.
+  std::size_t threads() const { return m_threads; }
+
  private:
   // Each input sample's nearest output point: a walk from last round's face; the tree, built only
   // when a sample needs it, for a sample without a face or whose walk lost its way.
@@ -95,7 +98,7 @@ class Fit_matching {
                      }
                    });
     if (std::find(lost.begin(), lost.end(), char(1)) == lost.end()) return;
-    const Fit_output_tree<TriangleMesh> tree(mesh);
+    const Fit_output_tree<TriangleMesh> tree(mesh, m_threads);
     for_each_block(samples.size(), kFitSamplesPerTask, m_threads,
                    [&](std::size_t begin, std::size_t end) {
                      // The last answer bounds the next search: consecutive samples are mostly

@@ -17,9 +17,9 @@ namespace internal {
 template <typename TriangleMesh>
 class Fit_output_tree {
  public:
-  // The faces of `mesh` as they are now.
-  explicit Fit_output_tree(const Fit_output_mesh<TriangleMesh>& mesh)
-      : m_mesh(&mesh), m_bvh(triangles_of(mesh)) {}
+  // The faces of `mesh` as they are now, indexed on up to `threads` cores.
+  Fit_output_tree(const Fit_output_mesh<TriangleMesh>& mesh, std::size_t threads)
+      : m_mesh(&mesh), m_bvh(triangles_of(mesh), threads) {}
 
   // The index of the face nearest p, the lowest among equals, whatever `near` is: a face near p
   // (kFitNoFace when none is known), whose distance bounds the search from the start.

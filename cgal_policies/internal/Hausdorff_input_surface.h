@@ -39,25 +39,27 @@ inline double diagonal_length(const CGAL::Bbox_3& box) {
 
 class Hausdorff_input_surface {
  public:
-  // Not `indexed` (local reference): only the tolerance, tolerance_fraction * D, is known.
+  // Not `indexed` (local reference): only the tolerance, tolerance_fraction * D, is known. The
+  // hierarchy is built on up to `threads` cores, the same on any count.
   template <typename InputMesh, typename VertexPointMap>
   Hausdorff_input_surface(const InputMesh& input, const VertexPointMap& vpm,
-                          double tolerance_fraction, bool indexed) {
+                          double tolerance_fraction, bool indexed, std::size_t threads = 1) {
     m_diagonal = diagonal_length(
         CGAL::Polygon_mesh_processing::bbox(input, CGAL::parameters::vertex_point_map(vpm)));
     m_tolerance = tolerance_fraction * m_diagonal;
-    if (indexed) index(input_triangles(input, vpm));
+    if (indexed) index(input_triangles(input, vpm), threads);
   }
 
   // Indexed triangles, with a tolerance of tolerance_fraction * D, D the diagonal of their box.
-  Hausdorff_input_surface(Input_triangles triangles, double tolerance_fraction) {
+  Hausdorff_input_surface(Input_triangles triangles, double tolerance_fraction,
+                          std::size_t threads = 1) {
     CGAL::Bbox_3 box;
     for (const Triangle_corners& t : triangles.corners)
       for (const Eigen::Vector3d& c : t)
         box += CGAL::Bbox_3(c.x(), c.y(), c.z(), c.x(), c.y(), c.z());
     m_diagonal = diagonal_length(box);
     m_tolerance = tolerance_fraction * m_diagonal;
-    index(std::move(triangles));
+    index(std::move(triangles), threads);
   }
 
   Hausdorff_input_surface(const Hausdorff_input_surface&) = delete;
@@ -151,8 +153,8 @@ class Hausdorff_input_surface {
  private:
   // The hierarchy keeps the only copy of the corners, in the order of its leaves, and the
   // neighbours follow that order: a walk then reads memory that the search has read or will.
-  void index(Input_triangles triangles) {
-    m_bvh = Triangle_bvh(triangles.corners);
+  void index(Input_triangles triangles, std::size_t threads) {
+    m_bvh = Triangle_bvh(triangles.corners, threads);
     triangles.corners = {};
     const std::uint32_t n = std::uint32_t(m_bvh.size());
     m_position.resize(n);

@@ -3,6 +3,7 @@
 #ifndef CGAL_POLICIES_INTERNAL_TRIANGLE_BVH_H
 #define CGAL_POLICIES_INTERNAL_TRIANGLE_BVH_H
 
+#include <cgal_policies/internal/for_each_in_parallel.h>
 #include <cgal_policies/internal/triangle_distance.h>
 
 #include <Eigen/Core>
@@ -30,7 +31,8 @@ class Triangle_bvh {
 
   Triangle_bvh() = default;  // no triangles
 
-  explicit Triangle_bvh(const std::vector<Triangle_corners>& triangles) {
+  // Built on up to `threads` cores (0: all of them); the tree is the same for every count.
+  explicit Triangle_bvh(const std::vector<Triangle_corners>& triangles, std::size_t threads = 1) {
     std::vector<Item> items;
     items.reserve(triangles.size());
     for (const Triangle_corners& t : triangles) {
@@ -39,8 +41,8 @@ class Triangle_bvh {
         m_magnitude = std::max(m_magnitude, c.cwiseAbs().maxCoeff());
     }
     if (!items.empty()) {
-      m_nodes.reserve(node_count(items.size()));
-      build(triangles, items, 0, std::uint32_t(items.size()));
+      m_nodes.resize(node_count(items.size()));
+      build(triangles, items, 0, std::uint32_t(items.size()), 0, threads);
     }
     m_triangles.reserve(items.size());
     m_index.reserve(items.size());
@@ -115,6 +117,8 @@ class Triangle_bvh {
   };
 
   static constexpr std::uint32_t kLeafSize = 4;
+  // Triangles below which a subtree is built on the core that split it.
+  static constexpr std::uint32_t kTrianglesPerTask = 16384;
   // Median splits halve the triangles: 2^32 of them need fewer levels, plus one pending per level.
   static constexpr std::size_t kMaxDepth = 64;
   // A bound of the rounding of squared_distance_to_triangle's distance relative to the
@@ -150,13 +154,14 @@ class Triangle_bvh {
     return double(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
   }
 
-  // Builds the node of items[begin, end): a leaf, or two halves split at the median of the
-  // centroids along the longest side of their box (ties by index, so that the tree is the same on
-  // every platform). Returns the node's index.
+  // Builds the subtree of items[begin, end) at node `at`: a leaf, or two halves split at the
+  // median of the centroids along the longest side of their box (ties by index, so that the tree
+  // is the same on every platform), the left one at at + 1, the right one after it. Halves of
+  // kTrianglesPerTask triangles or more are built at once on `threads` cores, the right one at
+  // its place counted in advance. Returns the node after the subtree's last.
   std::uint32_t build(const std::vector<Triangle_corners>& triangles, std::vector<Item>& items,
-                      std::uint32_t begin, std::uint32_t end) {
-    const std::uint32_t at = std::uint32_t(m_nodes.size());
-    m_nodes.emplace_back();
+                      std::uint32_t begin, std::uint32_t end, std::uint32_t at,
+                      std::size_t threads) {
     if (end - begin <= kLeafSize) {
       Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
       Eigen::Vector3d hi = -lo;
@@ -172,7 +177,7 @@ class Triangle_bvh {
       }
       leaf.first = begin;
       leaf.count = end - begin;
-      return at;
+      return at + 1;
     }
     Eigen::Vector3d lo = items[begin].centroid, hi = lo;
     for (std::uint32_t k = begin + 1; k < end; ++k) {
@@ -187,8 +192,19 @@ class Triangle_bvh {
                        const double ca = a.centroid[axis], cb = b.centroid[axis];
                        return ca < cb || (ca == cb && a.index < b.index);
                      });
-    build(triangles, items, begin, middle);
-    const std::uint32_t right = build(triangles, items, middle, end);
+    std::uint32_t right = 0, after = 0;
+    if (threads == 1 || middle - begin < kTrianglesPerTask) {
+      right = build(triangles, items, begin, middle, at + 1, 1);
+      after = build(triangles, items, middle, end, right, 1);
+    } else {
+      right = at + 1 + std::uint32_t(node_count(middle - begin));
+      for_each_in_parallel(2, threads, [&](std::size_t half) {
+        if (half == 0)
+          build(triangles, items, begin, middle, at + 1, threads);
+        else
+          after = build(triangles, items, middle, end, right, threads);
+      });
+    }
     Node& node = m_nodes[at];
     const Node& first = m_nodes[at + 1];
     const Node& second = m_nodes[right];
@@ -197,7 +213,7 @@ class Triangle_bvh {
       node.hi[k] = std::max(first.hi[k], second.hi[k]);
     }
     node.first = right;
-    return at;
+    return after;
   }
 
   std::vector<Node> m_nodes;

@@ -405,6 +405,28 @@ TEST(TriangleBvh, GivesTheNearestTriangleAndItsSquaredDistance) {
   EXPECT_EQ(Triangle_bvh().nearest({0, 0, 0}).triangle, Triangle_bvh::kNone);
 }
 
+// A sphere of 81,920 triangles, enough for its halves to be built at once: two cores keep the
+// triangles in the same order and give the same answers as one.
+TEST(TriangleBvh, TwoCoresBuildTheTreeOfOne) {
+  const Mesh sphere = loop_sphere(6);
+  const auto vpm = get(CGAL::vertex_point, sphere);
+  std::vector<Triangle_corners> triangles;
+  for (auto f : faces(sphere))
+    triangles.push_back(cgal_policies::internal::face_corners(f, sphere, vpm));
+  const Triangle_bvh one(triangles), two(triangles, 2);
+  ASSERT_EQ(one.size(), triangles.size());
+  ASSERT_EQ(two.size(), triangles.size());
+  for (std::uint32_t k = 0; k < one.size(); ++k) ASSERT_EQ(one.index(k), two.index(k)) << k;
+  std::mt19937 random(11);
+  const auto coordinate = [&] { return 3 * double(random()) / 4294967296.0 - 1.5; };
+  for (int q = 0; q < 1000; ++q) {
+    const Eigen::Vector3d p(coordinate(), coordinate(), coordinate());
+    const Triangle_bvh::Hit a = one.nearest(p), b = two.nearest(p);
+    EXPECT_EQ(a.triangle, b.triangle) << q;
+    EXPECT_EQ(a.squared_distance, b.squared_distance) << q;
+  }
+}
+
 // On the bunny, points on its triangles (a corner is the tie of all the triangles around it),
 // near them, inside its box and far away: the hierarchy's answer is the minimum of
 // squared_distance_to_triangle over every triangle, exactly, and the lowest index attaining it.
