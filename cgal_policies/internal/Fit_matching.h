@@ -83,21 +83,22 @@ class Fit_matching {
 
  private:
   // Each input sample's nearest output point: a walk from last round's face; the tree, built only
-  // when a sample needs it, for a sample without a face or whose walk lost its way.
+  // when a sample needs it, for a sample without a face or whose walk lost its way (its face
+  // kFitNoFace between the two sweeps).
   void match_input_samples(const Output_mesh& mesh, const std::vector<Fit_input_sample>& samples) {
     m_input_matches.resize(samples.size());
-    std::vector<char> lost(samples.size(), 0);
     for_each_block(samples.size(), kFitSamplesPerTask, m_threads,
                    [&](std::size_t begin, std::size_t end) {
                      for (std::size_t s = begin; s < end; ++s) {
                        std::uint32_t f = m_sample_face[s];
                        if (f == kFitNoFace || !walk_to_nearest(mesh, samples[s].point, f))
-                         lost[s] = 1;
+                         m_sample_face[s] = kFitNoFace;
                        else
                          settle(mesh, samples[s].point, s, f);
                      }
                    });
-    if (std::find(lost.begin(), lost.end(), char(1)) == lost.end()) return;
+    if (std::find(m_sample_face.begin(), m_sample_face.end(), kFitNoFace) == m_sample_face.end())
+      return;
     const Fit_output_tree<TriangleMesh> tree(mesh, m_threads);
     for_each_block(samples.size(), kFitSamplesPerTask, m_threads,
                    [&](std::size_t begin, std::size_t end) {
@@ -105,7 +106,7 @@ class Fit_matching {
                      // neighbours.
                      std::uint32_t near = kFitNoFace;
                      for (std::size_t s = begin; s < end; ++s) {
-                       if (!lost[s]) continue;
+                       if (m_sample_face[s] != kFitNoFace) continue;
                        near = tree.nearest(samples[s].point, near);
                        settle(mesh, samples[s].point, s, near);
                      }
