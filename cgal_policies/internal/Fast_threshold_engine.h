@@ -58,7 +58,7 @@ class Fast_threshold_engine {
   static constexpr double kLosslessTolerance = 1e-14;
   // The level cap: a pass takes only errors within this share of the open triangles (neither
   // deleted nor refused since they changed), so that cheap edges still go first (docs/fast.md).
-  static constexpr double kPassShare = 0.4;
+  static constexpr double kPassShare = 0.2;
   // Passes between two rebuilds of the reference lists.
   static constexpr std::size_t kCompactionPeriod = 5;
 
