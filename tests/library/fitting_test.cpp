@@ -13,6 +13,7 @@
 #include <cgal_policies/internal/Border_curve.h>
 #include <cgal_policies/internal/Fit_guard.h>
 #include <cgal_policies/internal/Hausdorff_input_surface.h>
+#include <cgal_policies/internal/Input_triangles.h>
 #include <cgal_policies/internal/Triangle_bvh.h>
 #include <cgal_policies/internal/nearest_corner_values.h>
 
@@ -409,10 +410,8 @@ TEST(TriangleBvh, GivesTheNearestTriangleAndItsSquaredDistance) {
 // triangles in the same order and give the same answers as one.
 TEST(TriangleBvh, TwoCoresBuildTheTreeOfOne) {
   const Mesh sphere = loop_sphere(6);
-  const auto vpm = get(CGAL::vertex_point, sphere);
-  std::vector<Triangle_corners> triangles;
-  for (auto f : faces(sphere))
-    triangles.push_back(cgal_policies::internal::face_corners(f, sphere, vpm));
+  const std::vector<Triangle_corners> triangles =
+      cgal_policies::internal::input_triangles(sphere, get(CGAL::vertex_point, sphere)).corners;
   const Triangle_bvh one(triangles), two(triangles, 2);
   ASSERT_EQ(one.size(), triangles.size());
   ASSERT_EQ(two.size(), triangles.size());
@@ -436,9 +435,8 @@ TEST(TriangleBvh, GivesTheBruteForceMinimumOnTheBunny) {
   using cgal_policies::internal::squared_distance_to_triangle;
   const Mesh bunny = apps::read_triangle_mesh(test_meshes::data_file("bunny.obj"));
   const auto vpm = get(CGAL::vertex_point, bunny);
-  std::vector<Triangle_corners> triangles;
-  for (auto f : faces(bunny))
-    triangles.push_back(cgal_policies::internal::face_corners(f, bunny, vpm));
+  const std::vector<Triangle_corners> triangles =
+      cgal_policies::internal::input_triangles(bunny, vpm).corners;
   const Triangle_bvh bvh(triangles);
   const cgal_policies::internal::Hausdorff_input_surface surface(bunny, vpm, 0.0, true);
   ASSERT_EQ(surface.size(), triangles.size());
