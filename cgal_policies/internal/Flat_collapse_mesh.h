@@ -55,12 +55,11 @@ class Flat_collapse_mesh {
   Flat_collapse_mesh(std::vector<Vertex_data> vertices, std::vector<Triangle> triangles)
       : m_triangles(std::move(triangles)) {
     m_vertices.reserve(vertices.size());
-    for (Vertex_data& v : vertices) m_vertices.push_back({std::move(v), 0, 0, false});
+    for (Vertex_data& v : vertices) m_vertices.push_back({0, 0, 0, false, std::move(v)});
     CGAL_precondition(std::all_of(m_triangles.begin(), m_triangles.end(), [](const Triangle& t) {
       return !t.deleted && t.v[0] != t.v[1] && t.v[1] != t.v[2] && t.v[2] != t.v[0];
     }));
     m_live_triangles = m_triangles.size();
-    m_mark.assign(m_vertices.size(), 0);
     compact();
   }
 
@@ -150,16 +149,15 @@ class Flat_collapse_mesh {
     for (const Reference* r = references_begin(a); r != references_end(a); ++r) {
       const Triangle& t = m_triangles[std::size_t(r->triangle)];
       if (t.deleted) continue;
-      m_mark[std::size_t(t.v[(r->corner + 1) % 3])] = m_stamp;
-      m_mark[std::size_t(t.v[(r->corner + 2) % 3])] = m_stamp;
+      mark(t.v[(r->corner + 1) % 3]);
+      mark(t.v[(r->corner + 2) % 3]);
       at_a.count(t, opposite, border_edge);
     }
     for (const Reference* r = references_begin(b); r != references_end(b); ++r) {
       const Triangle& t = m_triangles[std::size_t(r->triangle)];
       if (t.deleted) continue;
       for (int w : {t.v[(r->corner + 1) % 3], t.v[(r->corner + 2) % 3]})
-        if (w != a && m_mark[std::size_t(w)] == m_stamp && w != opposite[0] &&
-            (border_edge || w != opposite[1]))
+        if (w != a && marked(w) && w != opposite[0] && (border_edge || w != opposite[1]))
           return false;
       at_b.count(t, opposite, border_edge);
     }
@@ -308,19 +306,22 @@ class Flat_collapse_mesh {
   // A new stamp, which no vertex's mark holds yet; mark() and marked() use it.
   void next_stamp() {
     if (++m_stamp == 0) {  // wrapped: clear the stale marks once
-      std::fill(m_mark.begin(), m_mark.end(), 0);
+      for (Vertex& v : m_vertices) v.mark = 0;
       m_stamp = 1;
     }
   }
-  void mark(int v) { m_mark[std::size_t(v)] = m_stamp; }
-  bool marked(int v) const { return m_mark[std::size_t(v)] == m_stamp; }
+  void mark(int v) { m_vertices[std::size_t(v)].mark = m_stamp; }
+  bool marked(int v) const { return m_vertices[std::size_t(v)].mark == m_stamp; }
 
  private:
+  // The bookkeeping first, then the engine's data, whose point comes first: the link condition's
+  // marks then bring in the cache line of the point that the flip guard reads next.
   struct Vertex {
-    Vertex_data data;
     int first_reference;  // its triangles are m_references[first, first + count)
     int reference_count;
-    bool removed;  // merged into another vertex
+    unsigned mark;  // m_stamp when marked
+    bool removed;   // merged into another vertex
+    Vertex_data data;
   };
 
   // A vertex's triangles that hold the first vertex opposite an edge, and those that hold both.
@@ -465,7 +466,6 @@ class Flat_collapse_mesh {
   std::vector<Reference> m_star;
   std::vector<std::size_t> m_sides;
   std::vector<Planned_corner> m_planned;
-  std::vector<unsigned> m_mark;  // m_stamp where a vertex is marked
   unsigned m_stamp = 0;
   std::size_t m_live_triangles = 0;
 };
