@@ -137,7 +137,7 @@ std::size_t declared_faces(const std::string& path) {
 
 double mean_error_rel(const Run_record& r) {
   const double d = r.error.bbox_diagonal > 0 ? r.error.bbox_diagonal : 1;
-  return (r.error.mean_a_to_b + r.error.mean_b_to_a) / (2 * d);
+  return r.error.mean() / d;
 }
 
 std::string run_label(const Run_record& r) {

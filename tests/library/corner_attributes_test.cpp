@@ -35,12 +35,8 @@
 namespace {
 
 using namespace test_meshes;
+using pipeline_runs::mean_error;
 using pipeline_runs::simplify;
-
-double mean_error(const Mesh& original, const Mesh& mesh) {
-  const apps::Mesh_error e = apps::measure_mesh_error(original, mesh, 50000);
-  return (e.mean_a_to_b + e.mean_b_to_a) / 2;
-}
 
 // (cgal_policies/Corner_attribute_carrier.h).
 using Attributes = cgal_policies::Corner_attributes<Point>;

@@ -56,6 +56,7 @@
 namespace {
 
 using namespace test_meshes;
+using pipeline_runs::mean_error;
 using pipeline_runs::policy_alone;
 using pipeline_runs::policy_names;
 using pipeline_runs::run_as_job;
@@ -127,11 +128,6 @@ std::size_t self_intersection_count(const Mesh& mesh) {
   std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
   CGAL::Polygon_mesh_processing::self_intersections(mesh, std::back_inserter(pairs));
   return pairs.size();
-}
-
-double mean_error(const Mesh& original, const Mesh& mesh) {
-  const apps::Mesh_error e = apps::measure_mesh_error(original, mesh, 50000);
-  return (e.mean_a_to_b + e.mean_b_to_a) / 2;
 }
 
 // The fitting pass after a policy (docs/fitting.md): a valid output with the same faces, borders

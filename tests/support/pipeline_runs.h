@@ -3,6 +3,7 @@
 #ifndef CGAL_POLICIES_TESTS_SUPPORT_PIPELINE_RUNS_H
 #define CGAL_POLICIES_TESTS_SUPPORT_PIPELINE_RUNS_H
 
+#include "evaluation/surface_error.h"
 #include "pipeline/Pipeline.h"
 #include "pipeline/policy_registry.h"
 
@@ -15,6 +16,11 @@
 #include <vector>
 
 namespace pipeline_runs {
+
+// The mean two-sided error of `mesh` against `original`, 50,000 samples a direction.
+inline double mean_error(const apps::Mesh& original, const apps::Mesh& mesh) {
+  return apps::measure_mesh_error(original, mesh, 50000).mean();
+}
 
 // Every policy of the registry by name, for parameterised tests.
 inline std::vector<std::string> policy_names() {
