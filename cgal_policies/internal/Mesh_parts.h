@@ -106,6 +106,33 @@ struct Cell_soup {
   std::vector<char> locked;            // of each point: its vertex has faces in other cells
 };
 
+// A vertex whose faces in the cell make several fans is a point per fan, which a part's link
+// condition takes for distinct vertices: a collapse could join a neighbour of one fan to another
+// fan, and the stitching, making the fans one vertex again, would then give their edge three
+// faces or more. Every point of those fans' faces is locked too, so that no collapse in the part
+// gives a fan point a new neighbour.
+template <class Point>
+void lock_fans_of_split_vertices(const CGAL::Surface_mesh<Point>& mesh, Cell_soup<Point>& soup) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> locked_points;  // (vertex, point)
+  for (std::size_t p = 0; p < soup.fan_starts.size(); ++p)
+    if (soup.locked[p])
+      locked_points.emplace_back(std::uint32_t(mesh.target(soup.fan_starts[p])), std::uint32_t(p));
+  std::sort(locked_points.begin(), locked_points.end());
+  std::vector<char> split(soup.fan_starts.size(), false);
+  bool any = false;
+  for (std::size_t i = 1; i < locked_points.size(); ++i) {
+    if (locked_points[i].first != locked_points[i - 1].first) continue;
+    split[locked_points[i].second] = split[locked_points[i - 1].second] = true;
+    any = true;
+  }
+  if (!any) return;
+  for (std::size_t s = 0; s < soup.triangles.size(); s += 3) {
+    const std::size_t* t = &soup.triangles[s];
+    if (split[t[0]] || split[t[1]] || split[t[2]])
+      soup.locked[t[0]] = soup.locked[t[1]] = soup.locked[t[2]] = true;
+  }
+}
+
 template <class Point>
 Cell_soup<Point> cell_soup(const CGAL::Surface_mesh<Point>& mesh,
                            const std::vector<std::uint32_t>& cell, std::uint32_t c) {
@@ -179,6 +206,7 @@ Cell_soup<Point> cell_soup(const CGAL::Surface_mesh<Point>& mesh,
     }
   soup.locked.reserve(soup.fan_starts.size());
   for (const Halfedge start : soup.fan_starts) soup.locked.push_back(locked(mesh.target(start)));
+  lock_fans_of_split_vertices(mesh, soup);
   return soup;
 }
 

@@ -752,6 +752,41 @@ TEST(MeshParts, StitchingTheCutPartsGivesTheMeshBack) {
   EXPECT_TRUE(corner_values(whole) == corner_values(sphere));
 }
 
+// A grid whose cell 0 holds two opposite quadrants, so that their faces meet the centre in two
+// fans: part 0 has the centre twice, and locks, besides the vertices on the cut, every vertex of
+// those fans' faces, so that no collapse gives one fan a neighbour of the other.
+TEST(MeshParts, LockTheFansOfAVertexSplitInItsCell) {
+  namespace internal = cgal_policies::internal;
+  const Mesh grid = flat_grid(4);
+  const std::vector<Eigen::Vector3d> centroids = internal::face_centroids(grid, 1);
+  std::vector<std::uint32_t> cell;
+  for (const Eigen::Vector3d& c : centroids) cell.push_back((c.x() < 2) == (c.y() < 2) ? 0u : 1u);
+  const auto vertex_at = [&](const Point& p) {
+    return std::uint32_t(*std::find_if(grid.vertices().begin(), grid.vertices().end(),
+                                       [&](auto v) { return grid.point(v) == p; }));
+  };
+  const Mesh::Vertex_index centre(vertex_at(Point(2, 2, 0)));
+  std::set<std::uint32_t> expected;  // on the cut, or on a face of cell 0 at the centre
+  for (const auto v : grid.vertices()) {
+    std::set<std::uint32_t> cells_at_v;
+    for (const auto f : CGAL::faces_around_target(grid.halfedge(v), grid))
+      if (f != Mesh::null_face()) cells_at_v.insert(cell[std::size_t(f)]);
+    if (cells_at_v.size() > 1) expected.insert(std::uint32_t(v));
+  }
+  for (const auto f : CGAL::faces_around_target(grid.halfedge(centre), grid))
+    if (cell[std::size_t(f)] == 0)
+      for (const auto v : CGAL::vertices_around_face(grid.halfedge(f), grid))
+        expected.insert(std::uint32_t(v));
+  EXPECT_EQ(expected.count(vertex_at(Point(1, 1, 0))), 1u);  // inside its quadrant
+
+  const internal::Flat_part part = internal::flat_part(grid, cell, 0);
+  std::set<std::uint32_t> locked;
+  for (std::size_t i = 0; i < part.points.size(); ++i)
+    if (part.locked[i]) locked.insert(part.origin[i]);
+  EXPECT_EQ(locked, expected);
+  EXPECT_EQ(std::count(part.origin.begin(), part.origin.end(), std::uint32_t(centre)), 2);
+}
+
 // A part kept as arrays for the flat-array engines is the part mesh as those engines read it:
 // the same points, faces, border, locks and origins in the same order, and the same quadrics, on
 // a closed mesh and on one with a border, each cut in four.
@@ -979,6 +1014,25 @@ TEST_P(PartitionedRun, KeepsTheInvariantsAndGivesTheSameBytesOnAnyThreadCount) {
 INSTANTIATE_TEST_SUITE_P(Policies, PartitionedRun,
                          testing::Values("lt", "classic", "fast", "flat-lt"),
                          [](const auto& test) { return identifier(test.param); });
+
+// The dragon in many parts, where the faces of some cells meet a vertex in several fans: the
+// stitched parts are a manifold, and the run ends valid, at the target, closed where the input is.
+TEST(PartitionedRun, KeepsTheInvariantsInManyParts) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const Mesh input = apps::read_triangle_mesh(data_file("dragon.ply"));
+  const apps::Mesh_validity before = apps::check_mesh_validity(input);
+  const std::size_t target = input.number_of_faces() / 100;
+  for (const auto& [policy, parts] : std::vector<std::pair<std::string, std::size_t>>{
+           {"fast", 16}, {"fast", 32}, {"flat-lt", 32}}) {
+    SCOPED_TRACE(policy + " in " + std::to_string(parts));
+    cgal_policies::Simplification_options options = policy_alone(policy, target);
+    options.parts = parts;
+    options.threads = 2;
+    Mesh mesh = input;
+    EXPECT_EQ(apps::Pipeline(options).run(mesh).parts, parts);
+    expect_kept_as_a_partitioned_run_keeps(mesh, target, before);
+  }
+}
 
 // A partitioned run of fast, and of flat-lt after fast's prepass, on parts kept as arrays writes
 // the bytes of the same run on the part meshes, on a closed mesh and on one with a border.
