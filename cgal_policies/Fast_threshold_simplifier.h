@@ -69,8 +69,9 @@ class Fast_threshold_simplifier {
     {
       // The dynamic map lives in this block only, so that it is gone when tm is cleared.
       auto quadrics = get(CGAL::dynamic_vertex_property_t<internal::Quadric>(), tm);
-      internal::accumulate_vertex_quadrics(tm, get(CGAL::vertex_point, tm), Face_weighting::unit,
-                                           m_options.border_weight, quadrics, quadrics);
+      internal::accumulate_vertex_quadrics(tm, get(CGAL::vertex_point, tm),
+                                           plane_weighting(m_options), m_options.border_weight,
+                                           quadrics, quadrics);
       for (std::size_t i = 0; i < copy.vertices.size(); ++i)
         vertex_data.push_back({copy.points[i], get(quadrics, copy.vertices[i]),
                                bool(copy.border[i]), bool(copy.locked[i])});

@@ -16,7 +16,9 @@ std::vector<Policy_entry> fast_policies() {
           .number("aggressiveness", &Fast::aggressiveness, 0, Fast_table::unbounded,
                   "a in the threshold 1e-9 (k+3)^a D^2 of pass k", true)
           .flag("lossless", &Fast::lossless, true, "only collapses of zero error")
-          .border_weight();
+          .border_weight()
+          .flag("unit-weights", &Fast::face_weighting, cgal_policies::Face_weighting::unit,
+                "give the face planes equal weights, not their areas");
   using Lt = cgal_policies::Flat_lindstrom_turk_options;
   using Lt_table = Policy_options_table<Lt>;
   const Lt_table flat_lt = Lt_table(&cgal_policies::Simplification_options::flat_lt)

@@ -84,6 +84,7 @@ Flat_part flat_part(const CGAL::Surface_mesh<Point>& mesh, const std::vector<std
 // The vertices of the fast engine for `part`, before any engine ran on it: each vertex's face
 // planes and border planes summed as accumulate_vertex_quadrics sums them over mesh_part's mesh.
 inline std::vector<Fast_threshold_vertex> fast_threshold_vertices(const Flat_part& part,
+                                                                  Face_weighting weighting,
                                                                   double border_weight) {
   std::vector<Fast_threshold_vertex> vertices(part.points.size());
   for (std::size_t i = 0; i < vertices.size(); ++i)
@@ -94,13 +95,12 @@ inline std::vector<Fast_threshold_vertex> fast_threshold_vertices(const Flat_par
       return part.points[std::size_t(t[std::size_t(j % 3)])];
     };
     const Eigen::Vector3d normal = triangle_area_normal(at(0), at(1), at(2));
-    const Quadric face = triangle_plane_quadric(normal, at(1), Face_weighting::unit);
+    const Quadric face = triangle_plane_quadric(normal, at(1), weighting);
     for (int j = 0; j < 3; ++j) {
       Quadric& head = vertices[std::size_t(t[std::size_t((j + 1) % 3)])].quadric;
       head += face;
       if ((part.border_sides[f] >> j & 1u) == 0) continue;
-      const Quadric side =
-          border_side_quadric(at(j), at(j + 1), normal, border_weight, Face_weighting::unit);
+      const Quadric side = border_side_quadric(at(j), at(j + 1), normal, border_weight, weighting);
       vertices[std::size_t(t[std::size_t(j)])].quadric += side;
       head += side;
     }

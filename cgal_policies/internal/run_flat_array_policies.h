@@ -101,7 +101,8 @@ inline Policy_outcome run_on_flat_part(Flat_part& part, std::size_t target,
   if (options.policy == Simplification_policy::fast || prepass) {
     const Fast_threshold_options fast = fast_options_of(options);
     Fast_threshold_engine<No_corner_values> engine(
-        fast_threshold_vertices(part, fast.border_weight), part.triangles, part.diagonal());
+        fast_threshold_vertices(part, plane_weighting(fast), fast.border_weight), part.triangles,
+        part.diagonal());
     const auto outcome = engine.simplify(prepass ? coarse : target, fast, progress);
     take_engine_result(engine.mesh(), part);
     if (!prepass) return flat_array_outcome(outcome.target_reached, false, false);
