@@ -3,9 +3,11 @@
 #ifndef CGAL_POLICIES_INTERNAL_FAST_THRESHOLD_ENGINE_H
 #define CGAL_POLICIES_INTERNAL_FAST_THRESHOLD_ENGINE_H
 
+#include <cgal_policies/Face_weighting.h>
 #include <cgal_policies/Fast_threshold_options.h>
 #include <cgal_policies/internal/Flat_collapse_mesh.h>
 #include <cgal_policies/internal/Quadric.h>
+#include <cgal_policies/internal/mesh_geometry.h>
 #include <cgal_policies/internal/quadric_placement.h>
 
 #include <CGAL/assertions.h>
@@ -32,6 +34,25 @@ struct Fast_threshold_vertex {
   bool border = false;
   bool locked = false;  // never moved nor removed (the cut vertices of a partitioned run)
 };
+
+// With planes weighted by area an error is an area times a squared distance: the vertices'
+// quadrics are divided by the mean face area of `triangles`, so that the errors are squared
+// distances again, in the units of the thresholds, and a run is the same at any scale of the
+// model. Nothing with unit weights.
+inline void divide_by_mean_face_area(Face_weighting weighting,
+                                     const std::vector<Eigen::Vector3d>& points,
+                                     const std::vector<std::array<int, 3>>& triangles,
+                                     std::vector<Fast_threshold_vertex>& vertices) {
+  if (weighting != Face_weighting::area) return;
+  double twice_area = 0;
+  for (const std::array<int, 3>& t : triangles)
+    twice_area += triangle_area_normal(points[std::size_t(t[0])], points[std::size_t(t[1])],
+                                       points[std::size_t(t[2])])
+                      .norm();
+  if (!(twice_area > 0)) return;
+  const double scale = 2 * double(triangles.size()) / twice_area;
+  for (Fast_threshold_vertex& v : vertices) v.quadric = v.quadric.scaled(scale);
+}
 
 // Corners as Flat_collapse_mesh takes them; with values (mesh().set_corner_values), the collapses
 // keep the seam rules of Corner_attribute_carrier (docs/attributes.md).
