@@ -96,7 +96,10 @@ class Simplification_pipeline {
       const std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
       std::optional<internal::Policy_outcome> outcome;
       if (cells) {
-        internal::collapse_zero_length_edges(mesh);
+        const bool flat_parts = internal::runs_on_flat_parts(mesh, m_options);
+        // CGAL's edge collapse takes edges of zero length unasked, locked ends or not; the flat
+        // engines never collapse a locked end, and skip the garbage collection on one core.
+        if (!flat_parts) internal::collapse_zero_length_edges(mesh);
         const double diagonal = diagonal_of(mesh);
         const std::optional<Mesh> input_as_cut =
             keeps_input_as_cut() ? std::optional<Mesh>(mesh) : std::nullopt;
@@ -104,7 +107,7 @@ class Simplification_pipeline {
                                          report.target_faces);
         const auto run_policy =
             part_or_stitched_runner(mesh, input_as_cut, diagonal, progress, started);
-        if (internal::runs_on_flat_parts(mesh, m_options))
+        if (flat_parts)
           outcome = internal::run_flat_partitioned(
               mesh, report.target_faces, *cells, m_options.threads,
               [&](internal::Flat_part& part, std::size_t target) {

@@ -128,7 +128,8 @@ std::optional<Policy_outcome> run_partitioned(CGAL::Surface_mesh<Point>& mesh, s
       [&](std::size_t c) { return mesh_part(mesh, cell, std::uint32_t(c)); }, run_policy, mesh);
 }
 
-// run_partitioned for the flat-array engines on a mesh without corner values: the parts kept
+// run_partitioned for the flat-array engines on a mesh without corner values or garbage, whose
+// edges of zero length need not be collapsed (the engines keep every locked vertex): the parts kept
 // as arrays (Flat_part.h), run_on_part(part, target) running the policy on each, then stitched
 // into `mesh` and simplified to `target` by run_policy(mesh, target). The same result as
 // run_partitioned with those engines; no part loses a locked vertex (the engines refuse it).

@@ -937,10 +937,8 @@ TEST(PartitionedRun, ItsPartsShareOneTimeLimit) {
   EXPECT_TRUE(apps::check_mesh_validity(mesh).valid);
 }
 
-// Two vertices on the cut moved onto one point: CGAL collapses the edge between them without
-// asking any filter, so a part would lose one of them and the run would fall back to the whole.
-// The run collapses such edges in the whole first, and stays cut.
-TEST(PartitionedRun, CollapsesAnEdgeOfZeroLengthOnACutBeforeCutting) {
+// A sphere with two vertices on the cut of two cells moved onto one point.
+Mesh pinched_on_a_cut() {
   namespace internal = cgal_policies::internal;
   const auto on_cut = [](const Mesh& mesh, Mesh::Vertex_index v) {
     const internal::Spatial_cells cells(internal::face_centroids(mesh, 1), 2);
@@ -951,31 +949,62 @@ TEST(PartitionedRun, CollapsesAnEdgeOfZeroLengthOnACutBeforeCutting) {
     return seen.size() == 2;
   };
   const Mesh sphere = loop_sphere(3);
-  std::optional<Mesh> pinched;
   for (const auto e : sphere.edges()) {
     Mesh mesh = sphere;
     const auto h = mesh.halfedge(e);
     mesh.point(mesh.target(h)) = mesh.point(mesh.source(h));
-    if (on_cut(mesh, mesh.source(h)) && on_cut(mesh, mesh.target(h))) {
-      pinched = mesh;
-      break;
-    }
+    if (on_cut(mesh, mesh.source(h)) && on_cut(mesh, mesh.target(h))) return mesh;
   }
-  ASSERT_TRUE(pinched);
-  Mesh collapsed = *pinched;
-  internal::collapse_zero_length_edges(collapsed);
-  EXPECT_EQ(collapsed.number_of_faces(), pinched->number_of_faces() - 2);
-  EXPECT_EQ(collapsed.number_of_vertices(), pinched->number_of_vertices() - 1);
+  return Mesh();
+}
+
+bool has_an_edge_of_zero_length(const Mesh& mesh) {
+  for (const auto e : mesh.edges())
+    if (mesh.point(mesh.source(mesh.halfedge(e))) == mesh.point(mesh.target(mesh.halfedge(e))))
+      return true;
+  return false;
+}
+
+// Two vertices on the cut moved onto one point: CGAL collapses the edge between them without
+// asking any filter, so a part would lose one of them and the run would fall back to the whole.
+// The run collapses such edges in the whole first, and stays cut.
+TEST(PartitionedRun, CollapsesAnEdgeOfZeroLengthOnACutBeforeCutting) {
+  Mesh pinched = pinched_on_a_cut();
+  ASSERT_TRUE(has_an_edge_of_zero_length(pinched));
+  Mesh collapsed = pinched;
+  cgal_policies::internal::collapse_zero_length_edges(collapsed);
+  EXPECT_EQ(collapsed.number_of_faces(), pinched.number_of_faces() - 2);
+  EXPECT_EQ(collapsed.number_of_vertices(), pinched.number_of_vertices() - 1);
   EXPECT_TRUE(apps::check_mesh_validity(collapsed).closed);
 
   cgal_policies::Simplification_options options = policy_alone("lt", 200);
   options.parts = 2;
-  const cgal_policies::Simplification_report report = apps::Pipeline(options).run(*pinched);
+  const cgal_policies::Simplification_report report = apps::Pipeline(options).run(pinched);
   EXPECT_EQ(report.parts, 2u);
-  EXPECT_LE(pinched->number_of_faces(), 200u);
-  const apps::Mesh_validity after = apps::check_mesh_validity(*pinched);
+  EXPECT_LE(pinched.number_of_faces(), 200u);
+  const apps::Mesh_validity after = apps::check_mesh_validity(pinched);
   EXPECT_TRUE(after.valid);
   EXPECT_TRUE(after.closed);
+}
+
+// The flat engines' parts keep that edge, both ends locked, and the last pass over the whole
+// collapses it: the run stays cut, closed, at the target.
+TEST(PartitionedRun, LeavesAnEdgeOfZeroLengthOnACutToTheLastPassInFlatParts) {
+  for (const std::string policy : {"fast", "flat-lt"}) {
+    Mesh mesh = pinched_on_a_cut();
+    ASSERT_TRUE(has_an_edge_of_zero_length(mesh));
+    cgal_policies::Simplification_options options = policy_alone(policy, 200);
+    options.parts = 2;
+    ASSERT_TRUE(cgal_policies::internal::runs_on_flat_parts(mesh, options));
+    const cgal_policies::Simplification_report report = apps::Pipeline(options).run(mesh);
+    EXPECT_EQ(report.parts, 2u) << policy;
+    EXPECT_EQ(report.stop_reason, cgal_policies::Stop_reason::target_reached) << policy;
+    EXPECT_LE(mesh.number_of_faces(), 200u) << policy;
+    EXPECT_FALSE(has_an_edge_of_zero_length(mesh)) << policy;
+    const apps::Mesh_validity after = apps::check_mesh_validity(mesh);
+    EXPECT_TRUE(after.valid) << policy;
+    EXPECT_TRUE(after.closed) << policy;
+  }
 }
 
 std::string written_bytes(const Mesh& mesh, const std::string& name) {
