@@ -210,23 +210,17 @@ class Fast_threshold_engine {
     return next;
   }
 
-  // The error of merging a and b, an edge of triangle `on`, and where the merged vertex goes. With
-  // one end on the border, it stays at that end. With corner values the seam rules choose, and an
-  // edge they refuse costs infinity.
+  // The error of merging a and b, an edge of triangle `on`, and where the merged vertex goes: the
+  // border planes hold a border vertex near its border line. With corner values the seam rules
+  // choose, and an edge they refuse costs infinity.
   double edge_error(int a, int b, std::size_t on, Eigen::Vector3d& placement) {
     const Fast_threshold_vertex& va = m_mesh.vertex(a);
     const Fast_threshold_vertex& vb = m_mesh.vertex(b);
     const Quadric q = va.quadric + vb.quadric;
     constexpr double kRefused = std::numeric_limits<double>::infinity();
     if (va.locked || vb.locked) return kRefused;
-    if (m_mesh.carries_values()) {
-      placement = optimal_placement(q, va.point, vb.point).point;
-      if (!m_mesh.place_by_seams(a, b, on, placement)) return kRefused;
-    } else if (va.border != vb.border) {
-      placement = va.border ? va.point : vb.point;
-    } else {
-      placement = optimal_placement(q, va.point, vb.point).point;
-    }
+    placement = optimal_placement(q, va.point, vb.point).point;
+    if (m_mesh.carries_values() && !m_mesh.place_by_seams(a, b, on, placement)) return kRefused;
     const double error = q.evaluate(placement);
     return std::isfinite(error) ? (std::max)(0.0, error) : kRefused;
   }

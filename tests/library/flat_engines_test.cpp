@@ -103,7 +103,9 @@ double thinnest_face_shape(const Mesh& mesh) {
 // A flat hexagon fan whose centre was split into three coincident vertices a, b, c: four of its
 // ten faces have zero area, as the reader's repairs leave them on dragon.ply. Every edge between
 // a, b and c costs nothing; the old flip test refused to move a vertex of a face that was already
-// degenerate, so the faces stayed. Two collapses give back the clean six-face fan.
+// degenerate, so the faces stayed. Two collapses give back the clean six-face fan, its points
+// those of the input up to round-off: a border vertex goes to its quadric's best point, which a
+// solve finds within a few ulps.
 TEST(FastThresholdSimplifier, RemovesTheDegenerateFacesOfTheInput) {
   std::vector<Point> points;
   for (int i = 0; i < 6; ++i)
@@ -128,7 +130,10 @@ TEST(FastThresholdSimplifier, RemovesTheDegenerateFacesOfTheInput) {
   EXPECT_EQ(test_meshes::degenerate_face_count(mesh), 0u);
   std::vector<Point> expected(points.begin(), points.begin() + 7);
   std::sort(expected.begin(), expected.end());
-  EXPECT_EQ(sorted_points(mesh), expected);
+  const std::vector<Point> output = sorted_points(mesh);
+  ASSERT_EQ(output.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i)
+    EXPECT_LT(CGAL::squared_distance(output[i], expected[i]), 1e-24) << i;
 }
 
 // A flat fan around v = (1, 0.5): all four collapses of v onto a border vertex cost nothing. The
@@ -241,13 +246,22 @@ Fast_and_gh_errors fast_and_gh_errors(const char* file, double ratio) {
 }
 
 // The papers' lowest count: dragon.ply (hundreds of tiny holes) to 0.25%. Both reach the target;
-// the fast method's mean two-sided error stays within 2x gh's and its Hausdorff distance within 3x
-// (the measured ratios, and how the sliver rule brought them down: docs/fast.md).
-TEST(FastThresholdSimplifier, StaysNearGhOnDragonAtAQuarterPercent) {
+// the fast method's mean two-sided error is about gh's and its Hausdorff distance within 2x (the
+// sliver rule, the free placement at a border and the lighter border planes brought them down from
+// 6.5x, 1.55x and 2.1x: docs/fast.md).
+TEST(FastThresholdSimplifier, HasAboutGhsErrorOnDragonAtAQuarterPercent) {
   SKIP_IF_REAL_MESHES_ARE_OFF();
   const Fast_and_gh_errors errors = fast_and_gh_errors("dragon.ply", 0.0025);
-  EXPECT_LT(errors.fast.mean(), 2 * errors.gh.mean());
-  EXPECT_LT(errors.fast.hausdorff, 3 * errors.gh.hausdorff);
+  EXPECT_LT(errors.fast.mean(), 1.05 * errors.gh.mean());
+  EXPECT_LT(errors.fast.hausdorff, 2 * errors.gh.hausdorff);
+}
+
+// The bunny, whose base has five holes, at 1%: near gh's mean two-sided error, 1.16x with the
+// merged vertex pinned to a border end and the border planes at 1000 (docs/fast.md).
+TEST(FastThresholdSimplifier, KeepsNearGhsErrorAroundTheBunnysHoles) {
+  SKIP_IF_REAL_MESHES_ARE_OFF();
+  const Fast_and_gh_errors errors = fast_and_gh_errors("bunny.obj", 0.01);
+  EXPECT_LT(errors.fast.mean(), 1.08 * errors.gh.mean());
 }
 
 // At 1% of dragon_res2.ply the fast method has gh's mean two-sided error, which the level cap at
