@@ -97,8 +97,9 @@ class Simplification_pipeline {
       std::optional<internal::Policy_outcome> outcome;
       if (cells) {
         const bool flat_parts = internal::runs_on_flat_parts(mesh, m_options);
-        // CGAL's edge collapse takes edges of zero length unasked, locked ends or not; the flat
-        // engines never collapse a locked end, and skip the garbage collection on one core.
+        // CGAL's edge collapse takes edges of zero length unasked, locked ends or not. The flat
+        // engines never collapse a locked end: their runs leave those edges to them, and spare a
+        // garbage collection of the whole mesh on one core.
         if (!flat_parts) internal::collapse_zero_length_edges(mesh);
         const double diagonal = diagonal_of(mesh);
         const std::optional<Mesh> input_as_cut =

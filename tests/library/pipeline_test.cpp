@@ -937,7 +937,8 @@ TEST(PartitionedRun, ItsPartsShareOneTimeLimit) {
   EXPECT_TRUE(apps::check_mesh_validity(mesh).valid);
 }
 
-// A sphere with two vertices on the cut of two cells moved onto one point.
+// A sphere with two vertices on the cut of two cells moved onto one point (empty if no edge of the
+// sphere has both ends on the cut).
 Mesh pinched_on_a_cut() {
   namespace internal = cgal_policies::internal;
   const auto on_cut = [](const Mesh& mesh, Mesh::Vertex_index v) {
