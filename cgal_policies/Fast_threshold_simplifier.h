@@ -76,10 +76,8 @@ class Fast_threshold_simplifier {
         vertex_data.push_back({copy.points[i], get(quadrics, copy.vertices[i]),
                                bool(copy.border[i]), bool(copy.locked[i])});
     }
-    internal::divide_by_mean_face_area(plane_weighting(m_options), copy.points, copy.triangles,
-                                       vertex_data);
     internal::Fast_threshold_engine<Corners> engine(std::move(vertex_data), copy.triangles,
-                                                    copy.diagonal);
+                                                    copy.diagonal, plane_weighting(m_options));
     if constexpr (Copy::kCarries) engine.mesh().set_corner_values(std::move(copy.corners));
     const auto outcome = engine.simplify(target_faces, m_options, on_progress);
     copy.write_back(engine.mesh(), tm);

@@ -35,25 +35,6 @@ struct Fast_threshold_vertex {
   bool locked = false;  // never moved nor removed (the cut vertices of a partitioned run)
 };
 
-// With planes weighted by area an error is an area times a squared distance: the vertices'
-// quadrics are divided by the mean face area of `triangles`, so that the errors are squared
-// distances again, in the units of the thresholds, and a run is the same at any scale of the
-// model. Nothing with unit weights.
-inline void divide_by_mean_face_area(Face_weighting weighting,
-                                     const std::vector<Eigen::Vector3d>& points,
-                                     const std::vector<std::array<int, 3>>& triangles,
-                                     std::vector<Fast_threshold_vertex>& vertices) {
-  if (weighting != Face_weighting::area) return;
-  double twice_area = 0;
-  for (const std::array<int, 3>& t : triangles)
-    twice_area += triangle_area_normal(points[std::size_t(t[0])], points[std::size_t(t[1])],
-                                       points[std::size_t(t[2])])
-                      .norm();
-  if (!(twice_area > 0)) return;
-  const double scale = 2 * double(triangles.size()) / twice_area;
-  for (Fast_threshold_vertex& v : vertices) v.quadric = v.quadric.scaled(scale);
-}
-
 // Corners as Flat_collapse_mesh takes them; with values (mesh().set_corner_values), the collapses
 // keep the seam rules of Corner_attribute_carrier (docs/attributes.md).
 template <class Corners = No_corner_values>
@@ -83,10 +64,13 @@ class Fast_threshold_engine {
   // Passes between two rebuilds of the reference lists.
   static constexpr std::size_t kCompactionPeriod = 5;
 
+  // `planes`: how the face and border planes of the vertices' quadrics are weighted.
   // Precondition: every triangle has three distinct vertex indices in range.
   Fast_threshold_engine(std::vector<Fast_threshold_vertex> vertices,
-                        const std::vector<std::array<int, 3>>& triangles, double bbox_diagonal)
-      : m_mesh(std::move(vertices), triangles_of(triangles)),
+                        const std::vector<std::array<int, 3>>& triangles, double bbox_diagonal,
+                        Face_weighting planes)
+      : m_mesh(divided_by_mean_face_area(planes, triangles, std::move(vertices)),
+               triangles_of(triangles)),
         m_squared_diagonal(bbox_diagonal * bbox_diagonal) {}
 
   struct Outcome {
@@ -123,6 +107,25 @@ class Fast_threshold_engine {
 
  private:
   using Reference = typename Mesh::Reference;
+
+  // With planes weighted by area an error is an area times a squared distance: the quadrics are
+  // divided by the mean face area, so that the errors are squared distances again, in the units of
+  // the thresholds, and a run is the same at any scale of the model. As they are with unit weights.
+  static std::vector<Fast_threshold_vertex> divided_by_mean_face_area(
+      Face_weighting planes, const std::vector<std::array<int, 3>>& triangles,
+      std::vector<Fast_threshold_vertex> vertices) {
+    if (planes != Face_weighting::area) return vertices;
+    const auto point = [&](int v) -> const Eigen::Vector3d& {
+      return vertices[std::size_t(v)].point;
+    };
+    double twice_area = 0;
+    for (const std::array<int, 3>& t : triangles)
+      twice_area += triangle_area_normal(point(t[0]), point(t[1]), point(t[2])).norm();
+    if (!(twice_area > 0)) return vertices;
+    const double scale = 2 * double(triangles.size()) / twice_area;
+    for (Fast_threshold_vertex& v : vertices) v.quadric = v.quadric.scaled(scale);
+    return vertices;
+  }
 
   static std::vector<Triangle> triangles_of(const std::vector<std::array<int, 3>>& triangles) {
     std::vector<Triangle> result;

@@ -101,11 +101,9 @@ inline Policy_outcome run_on_flat_part(Flat_part& part, std::size_t target,
   if (options.policy == Simplification_policy::fast || prepass) {
     const Fast_threshold_options fast = fast_options_of(options);
     const Face_weighting weighting = plane_weighting(fast);
-    std::vector<Fast_threshold_vertex> vertices =
-        fast_threshold_vertices(part, weighting, fast.border_weight);
-    divide_by_mean_face_area(weighting, part.points, part.triangles, vertices);
-    Fast_threshold_engine<No_corner_values> engine(std::move(vertices), part.triangles,
-                                                   part.diagonal());
+    Fast_threshold_engine<No_corner_values> engine(
+        fast_threshold_vertices(part, weighting, fast.border_weight), part.triangles,
+        part.diagonal(), weighting);
     const auto outcome = engine.simplify(prepass ? coarse : target, fast, progress);
     take_engine_result(engine.mesh(), part);
     if (!prepass) return flat_array_outcome(outcome.target_reached, false, false);

@@ -38,16 +38,23 @@ std::size_t locked_vertex_count(const CGAL::Surface_mesh<Point>& part) {
   return count;
 }
 
+// The edges whose two ends are at one point.
+template <class Point>
+std::vector<CGAL::SM_Edge_index> zero_length_edges(const CGAL::Surface_mesh<Point>& mesh) {
+  std::vector<CGAL::SM_Edge_index> edges;
+  for (const auto e : mesh.edges())
+    if (mesh.point(mesh.source(mesh.halfedge(e))) == mesh.point(mesh.target(mesh.halfedge(e))))
+      edges.push_back(e);
+  return edges;
+}
+
 // Collapses the edges of zero length that CGAL's edge collapse may collapse, as it does before
 // anything else, and collects the garbage. CGAL asks no filter for those collapses, so a part
 // would otherwise lose one of two locked vertices at the same point.
 template <class Point>
 void collapse_zero_length_edges(CGAL::Surface_mesh<Point>& mesh) {
   using Mesh = CGAL::Surface_mesh<Point>;
-  std::vector<typename Mesh::Edge_index> zero_length;
-  for (const auto e : mesh.edges())
-    if (mesh.point(mesh.source(mesh.halfedge(e))) == mesh.point(mesh.target(mesh.halfedge(e))))
-      zero_length.push_back(e);
+  const std::vector<CGAL::SM_Edge_index> zero_length = zero_length_edges(mesh);
   if (zero_length.empty()) return;
   // The third corner of a face beside the edge must keep two other edges (collapse_edge's
   // precondition), and an inner edge between two border vertices would pinch the border.

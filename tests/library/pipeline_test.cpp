@@ -960,10 +960,7 @@ Mesh pinched_on_a_cut() {
 }
 
 bool has_an_edge_of_zero_length(const Mesh& mesh) {
-  for (const auto e : mesh.edges())
-    if (mesh.point(mesh.source(mesh.halfedge(e))) == mesh.point(mesh.target(mesh.halfedge(e))))
-      return true;
-  return false;
+  return !cgal_policies::internal::zero_length_edges(mesh).empty();
 }
 
 // Two vertices on the cut moved onto one point: CGAL collapses the edge between them without
