@@ -79,6 +79,28 @@ Matrix product(const Matrix& a, const Matrix& b) {
   return c;
 }
 
+// The inverse of an affine transform; none when it flattens space.
+std::optional<Matrix> affine_inverse(const Matrix& m) {
+  const auto at = [&m](int row, int col) { return m[std::size_t(col * 4 + row)]; };
+  const auto cofactor = [&at](int row, int col) {
+    const int r0 = (row + 1) % 3, r1 = (row + 2) % 3, c0 = (col + 1) % 3, c1 = (col + 2) % 3;
+    return at(r0, c0) * at(r1, c1) - at(r0, c1) * at(r1, c0);
+  };
+  const double det =
+      at(0, 0) * cofactor(0, 0) + at(0, 1) * cofactor(0, 1) + at(0, 2) * cofactor(0, 2);
+  if (!std::isnormal(det)) return std::nullopt;
+  Matrix inverse = kIdentity;
+  for (int row = 0; row < 3; ++row)
+    for (int col = 0; col < 3; ++col)
+      inverse[std::size_t(col * 4 + row)] = cofactor(col, row) / det;
+  for (int row = 0; row < 3; ++row) {
+    double t = 0;
+    for (int k = 0; k < 3; ++k) t -= inverse[std::size_t(k * 4 + row)] * at(k, 3);
+    inverse[std::size_t(12 + row)] = t;
+  }
+  return inverse;
+}
+
 // The node's matrix, or its translation * rotation * scale.
 Matrix local_matrix(const tinygltf::Node& node) {
   Matrix m = kIdentity;
@@ -109,6 +131,7 @@ struct Placed_mesh {
   int mesh;
   Matrix world;
   int skin;  // its node's, or -1
+  int node;  // -1 for a file without scenes, whose meshes have none
 };
 
 // Deeper hierarchies are refused rather than risking the stack on a forged file.
@@ -170,7 +193,7 @@ void place_node(const std::string& path, const tinygltf::Model& model, int node,
     fail(path, "the node hierarchy has a cycle");
   const tinygltf::Node& n = model.nodes[std::size_t(shown)];
   const Matrix world = product(parent, local_matrix(n));
-  if (n.mesh >= 0) placed.push_back({n.mesh, world, n.skin});
+  if (n.mesh >= 0) placed.push_back({n.mesh, world, n.skin, shown});
   on_path[std::size_t(node)] = on_path[std::size_t(shown)] = 1;
   for (int child : n.children)
     place_node(path, model, child, world, on_path, depth + 1, walk, placed);
@@ -181,7 +204,8 @@ std::vector<Placed_mesh> placed_meshes(const std::string& path, const tinygltf::
                                        Lod_walk& walk) {
   std::vector<Placed_mesh> placed;
   if (model.scenes.empty()) {
-    for (std::size_t m = 0; m < model.meshes.size(); ++m) placed.push_back({int(m), kIdentity, -1});
+    for (std::size_t m = 0; m < model.meshes.size(); ++m)
+      placed.push_back({int(m), kIdentity, -1, -1});
     return placed;
   }
   const int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
@@ -454,6 +478,18 @@ std::array<double, 6> texture_transform(const tinygltf::Material& material, int 
   return {c * scale[0], s * scale[1], offset[0], -s * scale[0], c * scale[1], offset[1]};
 }
 
+// The skin whose influences the soups carry: the skins of the meshes placed, merged into one.
+struct Carried_skin {
+  std::vector<int> joints;  // the nodes: the first skin's joints, then each next skin's new ones
+  // By input skin: each of its joints' index in `joints`; empty for a skin no placed mesh has.
+  std::vector<std::vector<std::uint16_t>> joint_of;
+  std::vector<double> inverse_bind_matrices;  // 16 per joint; none when no skin has them
+  int skeleton = -1;                          // the skins' common skeleton root, or none
+  std::string name;                           // the first skin's
+  // The joint of each node whose mesh has no skin: the node itself, its vertices weighing 1 on it.
+  std::map<int, std::uint16_t> rigid_joint_of;
+};
+
 // Builds the soup primitive by primitive: a point for each glTF vertex a triangle uses, the
 // corner tables an entry for each glTF vertex.
 class Soup_builder {
@@ -461,16 +497,18 @@ class Soup_builder {
   static constexpr std::size_t kKinds = 5;
 
  public:
-  // `skin`: the skin whose influences the soup carries (carried_skin), or -1.
-  Soup_builder(const std::string& path, const tinygltf::Model& model, int skin)
+  // `skin`: the skin whose influences the soup carries (carried_skin), or none.
+  Soup_builder(const std::string& path, const tinygltf::Model& model,
+               const std::optional<Carried_skin>& skin)
       : m_path(path),
         m_model(model),
         m_rules(uses(model, "KHR_mesh_quantization")),
         m_quantized(uses(model, "KHR_mesh_quantization")),
         m_skin(skin) {}
 
+  // `mesh`: where the primitive's mesh is placed, for its skin influences.
   void add_primitive(const tinygltf::Primitive& primitive, const Matrix& world,
-                     const std::string& what) {
+                     const Placed_mesh& mesh, const std::string& what) {
     const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
     if (mode == TINYGLTF_MODE_POINTS || mode == TINYGLTF_MODE_LINE ||
         mode == TINYGLTF_MODE_LINE_LOOP || mode == TINYGLTF_MODE_LINE_STRIP)
@@ -494,7 +532,7 @@ class Soup_builder {
                                            read_normals(primitive, vertices, moved, world, what),
                                            read_colors(primitive, vertices, what),
                                            read_uvs(primitive, 1, vertices, what),
-                                           read_skin(primitive, vertices, what)};
+                                           read_skin(primitive, mesh, vertices, what)};
     const std::array<std::vector<std::vector<std::size_t>>*, kKinds> lists = {
         &tables.polygon_uvs, &tables.polygon_normals, &tables.polygon_colors,
         &tables.polygon_second_uvs, &tables.polygon_skins};
@@ -636,10 +674,19 @@ class Soup_builder {
   // The influences of JOINTS_n and WEIGHTS_n, for every set n the primitive has (sets past the
   // first hold the influences past four): each vertex keeps its four heaviest joints,
   // renormalised (Corner_attributes::normalized_skin).
-  bool read_skin(const tinygltf::Primitive& primitive, std::size_t vertices,
-                 const std::string& what) {
-    if (m_skin < 0) return false;
-    const std::size_t skin_joints = m_model.skins[std::size_t(m_skin)].joints.size();
+  // Joint j of the mesh's skin becomes the carried skin's joint_of[skin][j]; a mesh without a skin
+  // weighs 1 on its node's joint.
+  bool read_skin(const tinygltf::Primitive& primitive, const Placed_mesh& mesh,
+                 std::size_t vertices, const std::string& what) {
+    if (!m_skin) return false;
+    if (mesh.skin < 0) {
+      const std::uint16_t joint = m_skin->rigid_joint_of.at(mesh.node);
+      for (std::size_t v = 0; v < vertices; ++v)
+        m_soup.corners.skins.push_back(Corner_attributes<Point>::normalized_skin({{joint, 1.0}}));
+      return true;
+    }
+    const std::vector<std::uint16_t>& joint_of = m_skin->joint_of[std::size_t(mesh.skin)];
+    const std::size_t skin_joints = joint_of.size();
     std::vector<std::vector<std::pair<std::uint16_t, double>>> influences(vertices);
     for (int set = 0;; ++set) {
       const std::string joints_name = "JOINTS_" + std::to_string(set),
@@ -659,9 +706,9 @@ class Soup_builder {
         if (joint_values[i] >= double(skin_joints))
           fail(m_path, what + ": joint " + std::to_string(std::size_t(joint_values[i])) +
                            " of vertex " + std::to_string(i / 4) + " is out of range (skin " +
-                           std::to_string(m_skin) + " has " + std::to_string(skin_joints) +
+                           std::to_string(mesh.skin) + " has " + std::to_string(skin_joints) +
                            " joints)");
-        influences[i / 4].emplace_back(std::uint16_t(joint_values[i]), weight_values[i]);
+        influences[i / 4].emplace_back(joint_of[std::size_t(joint_values[i])], weight_values[i]);
       }
     }
     for (auto& vertex : influences)
@@ -679,7 +726,7 @@ class Soup_builder {
   const tinygltf::Model& m_model;
   const Attribute_rules m_rules;
   const bool m_quantized;
-  const int m_skin;
+  const std::optional<Carried_skin>& m_skin;
   Polygon_soup m_soup;
   // Whether any primitive has texture coordinates, normals, colours, second texture coordinates,
   // skin influences.
@@ -808,25 +855,123 @@ const std::vector<tinygltf::Primitive>& primitives_of(const std::string& path,
   return model.meshes[std::size_t(mesh)].primitives;
 }
 
-// The skin whose influences the soups carry: the one skin that skins every mesh placed at every
-// level, when each of their triangle primitives has JOINTS_0 and WEIGHTS_0; -1 otherwise, and
-// then, when some placed mesh has a skin, `left_out` says why it is left out.
-int carried_skin(const std::string& path, const tinygltf::Model& model,
-                 const std::vector<std::vector<Placed_mesh>>& levels,
-                 std::vector<std::string>& left_out) {
+// Whether two inverse bind matrices bind a joint alike: equal up to the floats they are stored in.
+bool same_binding(const double* a, const double* b) {
+  for (int i = 0; i < 16; ++i)
+    if (std::abs(a[i] - b[i]) > 1e-6 * (std::max)({1.0, std::abs(a[i]), std::abs(b[i])}))
+      return false;
+  return true;
+}
+
+// Skin `skin`'s inverse bind matrices, 16 values per joint; identities when it has none.
+std::vector<double> inverse_bind_matrices(const std::string& path, const tinygltf::Model& model,
+                                          int skin) {
+  const tinygltf::Skin& input = model.skins[std::size_t(skin)];
+  if (input.inverseBindMatrices < 0) {
+    std::vector<double> identities;
+    for (std::size_t j = 0; j < input.joints.size(); ++j)
+      identities.insert(identities.end(), kIdentity.begin(), kIdentity.end());
+    return identities;
+  }
+  std::vector<double> matrices =
+      accessor_values(path, model, input.inverseBindMatrices,
+                      {TINYGLTF_TYPE_MAT4, {kFloat}, Integers::not_normalized},
+                      "skin " + std::to_string(skin) + " inverseBindMatrices");
+  if (matrices.size() != 16 * input.joints.size())
+    fail(path, "skin " + std::to_string(skin) + ": " + std::to_string(matrices.size() / 16) +
+                   " inverse bind matrices for " + std::to_string(input.joints.size()) + " joints");
+  return matrices;
+}
+
+// The skins of the meshes `levels` place, as one: each skin's joints in the order of the skins,
+// then the node of each mesh without a skin as a joint of its own, bound where the node is. A node
+// that two of them bind must be bound alike, else `reason` says which do not and there is none.
+std::optional<Carried_skin> merged_skins(const std::string& path, const tinygltf::Model& model,
+                                         const std::vector<std::vector<Placed_mesh>>& levels,
+                                         std::string& reason) {
   std::set<int> skins;
   for (const std::vector<Placed_mesh>& placed : levels)
-    for (const Placed_mesh& mesh : placed) {
-      if (mesh.skin >= 0 && std::size_t(mesh.skin) >= model.skins.size())
-        fail(path, "skin " + std::to_string(mesh.skin) + " does not exist");
-      skins.insert(mesh.skin);
+    for (const Placed_mesh& mesh : placed)
+      if (mesh.skin >= 0) skins.insert(mesh.skin);
+  Carried_skin merged;
+  merged.joint_of.resize(model.skins.size());
+  merged.skeleton = model.skins[std::size_t(*skins.begin())].skeleton;
+  merged.name = model.skins[std::size_t(*skins.begin())].name;
+  bool any_matrices = false;
+  // Each joint's node: who bound it first, for the reason.
+  std::map<int, std::pair<std::string, std::size_t>> bound;
+  // The joint of `node` bound by `matrix` for `who`; none when another bound it otherwise.
+  const auto bind = [&](int node, const double* matrix,
+                        const std::string& who) -> std::optional<std::uint16_t> {
+    const auto [first, added] = bound.emplace(node, std::make_pair(who, merged.joints.size()));
+    if (!added) {
+      const std::size_t joint = first->second.second;
+      if (same_binding(matrix, &merged.inverse_bind_matrices[16 * joint]))
+        return std::uint16_t(joint);
+      reason = first->second.first + " and " + who + " bind node " + std::to_string(node) +
+               " differently";
+      return std::nullopt;
     }
-  if (skins.empty() || *skins.rbegin() < 0) return -1;
-  std::string reason;
-  if (skins.size() > 1)
-    reason = skins.count(-1) ? "skinned and unskinned meshes together" : "more than one skin";
+    if (merged.joints.size() > std::numeric_limits<std::uint16_t>::max()) {
+      reason = "more than 65536 joints";
+      return std::nullopt;
+    }
+    merged.joints.push_back(node);
+    merged.inverse_bind_matrices.insert(merged.inverse_bind_matrices.end(), matrix, matrix + 16);
+    return std::uint16_t(merged.joints.size() - 1);
+  };
+  for (int skin : skins) {
+    const tinygltf::Skin& input = model.skins[std::size_t(skin)];
+    if (input.skeleton != merged.skeleton) merged.skeleton = -1;
+    for (int node : input.joints)
+      if (node < 0 || std::size_t(node) >= model.nodes.size())
+        fail(path, "skin " + std::to_string(skin) + " names node " + std::to_string(node) +
+                       ", which does not exist");
+    if (input.skeleton >= 0 && std::size_t(input.skeleton) >= model.nodes.size())
+      fail(path, "skin " + std::to_string(skin) + " names node " + std::to_string(input.skeleton) +
+                     ", which does not exist");
+    any_matrices = any_matrices || input.inverseBindMatrices >= 0;
+    const std::vector<double> matrices = inverse_bind_matrices(path, model, skin);
+    for (std::size_t j = 0; j < input.joints.size(); ++j) {
+      const std::optional<std::uint16_t> joint =
+          bind(input.joints[j], &matrices[16 * j], "skin " + std::to_string(skin));
+      if (!joint) return std::nullopt;
+      merged.joint_of[std::size_t(skin)].push_back(*joint);
+    }
+  }
   for (const std::vector<Placed_mesh>& placed : levels)
     for (const Placed_mesh& mesh : placed) {
+      if (mesh.skin >= 0 || merged.rigid_joint_of.count(mesh.node)) continue;
+      const std::string who = "node " + std::to_string(mesh.node) + "'s mesh";
+      const std::optional<Matrix> inverse = affine_inverse(mesh.world);
+      if (!inverse) {
+        reason = "node " + std::to_string(mesh.node) + "'s transform flattens its mesh";
+        return std::nullopt;
+      }
+      any_matrices = true;
+      const std::optional<std::uint16_t> joint = bind(mesh.node, inverse->data(), who);
+      if (!joint) return std::nullopt;
+      merged.rigid_joint_of[mesh.node] = *joint;
+    }
+  if (!any_matrices) merged.inverse_bind_matrices.clear();
+  return merged;
+}
+
+// The skin whose influences the soups carry: the skins of every mesh placed at every level, and
+// the nodes of those without one, merged (merged_skins), when some mesh is skinned and each
+// triangle primitive of a skinned mesh has JOINTS_0 and WEIGHTS_0; none otherwise, and then, when
+// some placed mesh has a skin, `left_out` says why it is left out.
+std::optional<Carried_skin> carried_skin(const std::string& path, const tinygltf::Model& model,
+                                         const std::vector<std::vector<Placed_mesh>>& levels,
+                                         std::vector<std::string>& left_out) {
+  bool skinned = false;
+  std::string reason;
+  for (const std::vector<Placed_mesh>& placed : levels)
+    for (const Placed_mesh& mesh : placed) {
+      if (mesh.skin < 0) continue;
+      if (std::size_t(mesh.skin) >= model.skins.size())
+        fail(path, "skin " + std::to_string(mesh.skin) + " does not exist");
+      skinned = true;
       const std::vector<tinygltf::Primitive>& primitives = primitives_of(path, model, mesh.mesh);
       for (std::size_t p = 0; p < primitives.size() && reason.empty(); ++p) {
         const tinygltf::Primitive& primitive = primitives[p];
@@ -837,10 +982,13 @@ int carried_skin(const std::string& path, const tinygltf::Model& model,
                    " has no JOINTS_0 and WEIGHTS_0";
       }
     }
-  if (reason.empty()) return *skins.begin();
+  if (!skinned) return std::nullopt;
+  if (reason.empty())
+    if (std::optional<Carried_skin> merged = merged_skins(path, model, levels, reason))
+      return merged;
   left_out.push_back(path + ": the skin is left out (" + reason +
                      "); every mesh is placed by its node's transform");
-  return -1;
+  return std::nullopt;
 }
 
 // A line in `left_out` for each mesh placed at some level whose primitives have morph targets:
@@ -860,16 +1008,17 @@ void note_morph_targets(const std::string& path, const tinygltf::Model& model,
     }
 }
 
-// The soup of the meshes `placed`; those skinned by `skin` (carried_skin) where they are, as glTF
-// ignores a skinned mesh's node transform, with their influences.
+// The soup of the meshes `placed`; with a carried skin (carried_skin), the skinned ones where they
+// are, as glTF ignores a skinned mesh's node transform, and every one with its influences.
 Polygon_soup soup_of(const std::string& path, const tinygltf::Model& model,
-                     const std::vector<Placed_mesh>& placed, int skin) {
+                     const std::vector<Placed_mesh>& placed,
+                     const std::optional<Carried_skin>& skin) {
   Soup_builder builder(path, model, skin);
   for (const Placed_mesh& mesh : placed) {
     const std::vector<tinygltf::Primitive>& primitives = primitives_of(path, model, mesh.mesh);
     for (std::size_t p = 0; p < primitives.size(); ++p)
       builder.add_primitive(
-          primitives[p], skin >= 0 ? kIdentity : mesh.world,
+          primitives[p], skin && mesh.skin >= 0 ? kIdentity : mesh.world, mesh,
           "mesh " + std::to_string(mesh.mesh) + " primitive " + std::to_string(p));
   }
   return std::move(builder).soup();
@@ -1033,33 +1182,28 @@ void keep_animations(const std::string& path, const tinygltf::Model& model,
   }
 }
 
-// The nodes skin `skin` needs, with the skin, for a written file to pose the mesh as the input
-// does: its joints and skeleton root and all their ancestors, in the input's order, each with its
-// name, transform and the children among them (no mesh, camera or extension); the skin's joints
-// and skeleton named among them, its inverse bind matrices (when it has them) as MAT4 floats, and
-// the animations of those nodes (keep_animations), each accessor with a view of its own in
-// buffer 0.
-void keep_skeleton(const std::string& path, const tinygltf::Model& model, int skin,
+// The nodes the carried skin needs, with the skin, for a written file to pose the mesh as the
+// input does: its joints and skeleton root and all their ancestors, in the input's order, each with
+// its name, transform and the children among them (no mesh, camera or extension); the skin's
+// joints and skeleton named among them, its inverse bind matrices (when it has them) as MAT4
+// floats, and the animations of those nodes (keep_animations), each accessor with a view of its
+// own in buffer 0.
+void keep_skeleton(const std::string& path, const tinygltf::Model& model, const Carried_skin& skin,
                    tinygltf::Model& looks, std::vector<std::string>& left_out) {
-  const tinygltf::Skin& input = model.skins[std::size_t(skin)];
   std::vector<int> parent(model.nodes.size(), -1);
   for (std::size_t n = 0; n < model.nodes.size(); ++n)
     for (int child : model.nodes[n].children)
       if (child >= 0 && std::size_t(child) < model.nodes.size())
         parent[std::size_t(child)] = int(n);
   std::vector<char> kept(model.nodes.size(), 0);
-  std::vector<int> named = input.joints;
-  if (input.skeleton >= 0) named.push_back(input.skeleton);
-  for (int node : named) {
-    if (node < 0 || std::size_t(node) >= model.nodes.size())
-      fail(path, "skin " + std::to_string(skin) + " names node " + std::to_string(node) +
-                     ", which does not exist");
+  std::vector<int> named = skin.joints;
+  if (skin.skeleton >= 0) named.push_back(skin.skeleton);
+  for (int node : named)
     // At most one step per node: a cycle of parents (a forged file) stops.
     for (std::size_t steps = 0; node >= 0 && steps <= model.nodes.size(); ++steps) {
       kept[std::size_t(node)] = 1;
       node = parent[std::size_t(node)];
     }
-  }
   std::vector<int> index(model.nodes.size(), -1);
   for (std::size_t n = 0; n < model.nodes.size(); ++n)
     if (kept[n]) index[n] = int(looks.nodes.size()), looks.nodes.emplace_back();
@@ -1077,19 +1221,13 @@ void keep_skeleton(const std::string& path, const tinygltf::Model& model, int sk
         to.children.push_back(index[std::size_t(child)]);
   }
   tinygltf::Skin& kept_skin = looks.skins.emplace_back();
-  kept_skin.name = input.name;
-  for (int joint : input.joints) kept_skin.joints.push_back(index[std::size_t(joint)]);
-  kept_skin.skeleton = input.skeleton >= 0 ? index[std::size_t(input.skeleton)] : -1;
+  kept_skin.name = skin.name;
+  for (int joint : skin.joints) kept_skin.joints.push_back(index[std::size_t(joint)]);
+  kept_skin.skeleton = skin.skeleton >= 0 ? index[std::size_t(skin.skeleton)] : -1;
   keep_animations(path, model, index, looks, left_out);
-  if (input.inverseBindMatrices < 0) return;
-  const std::vector<double> matrices =
-      accessor_values(path, model, input.inverseBindMatrices,
-                      {TINYGLTF_TYPE_MAT4, {kFloat}, Integers::not_normalized},
-                      "skin " + std::to_string(skin) + " inverseBindMatrices");
-  if (matrices.size() != 16 * input.joints.size())
-    fail(path, "skin " + std::to_string(skin) + ": " + std::to_string(matrices.size() / 16) +
-                   " inverse bind matrices for " + std::to_string(input.joints.size()) + " joints");
-  kept_skin.inverseBindMatrices = keep_floats(looks, matrices, TINYGLTF_TYPE_MAT4, false);
+  if (!skin.inverse_bind_matrices.empty())
+    kept_skin.inverseBindMatrices =
+        keep_floats(looks, skin.inverse_bind_matrices, TINYGLTF_TYPE_MAT4, false);
 }
 
 // read_gltf_levels, or with `follow_lod` false the finest level alone, as read_gltf reads it.
@@ -1101,15 +1239,15 @@ std::vector<Gltf_soup> read_levels(const std::string& path, bool binary, bool fo
   // Level 0's walk finds how many levels there are.
   for (; walk.level < walk.levels; ++walk.level) placed.push_back(placed_meshes(path, model, walk));
   std::vector<std::string> left_out;
-  const int skin = carried_skin(path, model, placed, left_out);
+  const std::optional<Carried_skin> skin = carried_skin(path, model, placed, left_out);
   note_morph_targets(path, model, placed, left_out);
   std::vector<Gltf_soup> levels;
   for (const std::vector<Placed_mesh>& level : placed)
     levels.push_back({soup_of(path, model, level, skin), nullptr, {}});
   // Last: the soups above name the materials, which the looks take away.
   std::shared_ptr<tinygltf::Model> looks = kept_looks(model, path);
-  if (skin >= 0)
-    keep_skeleton(path, model, skin, *looks, left_out);
+  if (skin)
+    keep_skeleton(path, model, *skin, *looks, left_out);
   else if (!model.animations.empty())
     left_out.push_back(path + ": its " + std::to_string(model.animations.size()) +
                        (model.animations.size() == 1 ? " animation is" : " animations are") +

@@ -41,12 +41,15 @@ struct Gltf_soup {
 // a line in `left_out` per mesh that has them. The points are joined where exactly equal
 // (join_equal_points), so that the vertices a UV seam or a primitive boundary splits become one
 // vertex whose corners disagree.
-// Skins: when one skin skins every mesh placed (at every level of detail) and each of their
-// triangle primitives has JOINTS_0 and WEIGHTS_0 (u8 or u16 joints; float, or normalized u8 or
-// u16 weights), the meshes are taken where they are, untransformed, as glTF ignores a skinned
+// Skins: when some mesh placed (at any level of detail) is skinned and each triangle primitive of
+// a skinned mesh has JOINTS_0 and WEIGHTS_0 (u8 or u16 joints; float, or normalized u8 or u16
+// weights), the skinned meshes are taken where they are, untransformed, as glTF ignores a skinned
 // mesh's node transform, and each glTF vertex gives the corner tables its skin influences: its
 // four heaviest joints of JOINTS_n/WEIGHTS_n, every set n (more than four influences are merged),
-// renormalised; the skeleton's animations come too: each channel that turns, moves or scales
+// renormalised. Several skins are merged into one (each node a joint once), and a mesh without a
+// skin is placed by its node's transform, each vertex weighing 1 on that node, which joins the skin
+// bound where it stands; two skins that bind a node differently, or a node's transform that cannot
+// be inverted, leave the skin out. The skeleton's animations come too: each channel that turns, moves or scales
 // one of its nodes, with its sampler's times and values (glTF's types, KHR_mesh_quantization's
 // integers included, read as floats); an animation that loses a channel (of another node, of
 // morph target weights, without a sampler, or whose sampler cannot be read or whose times do not

@@ -2493,10 +2493,155 @@ TEST(Gltf, MoreThanFourInfluencesKeepTheFourHeaviest) {
   fs::remove_all(folder);
 }
 
+// The skinned strip and a second strip, 5 above it, of a mesh of its own, under a node moved by
+// 200 (which glTF ignores), skinned by skin 1: joints `joints` with inverse bind matrices
+// `matrices` (a copy of skin 0's when empty).
+Gltf_builder strips_of_two_skins(const std::vector<int>& joints, std::vector<float> matrices) {
+  Gltf_builder b = skinned_strip();
+  std::vector<float> points;
+  for (int x = 0; x <= 4; ++x)
+    for (int y = 0; y <= 1; ++y) points.insert(points.end(), {float(x), float(y + 5), 0});
+  tinygltf::Mesh upper = b.model.meshes[0];
+  upper.primitives[0].attributes["POSITION"] = b.accessor(points, kFloat, TINYGLTF_TYPE_VEC3);
+  b.model.meshes.push_back(upper);
+  b.model.nodes.resize(6);
+  b.model.nodes[3].name = "root 2";
+  b.model.nodes[3].children = {4};
+  b.model.nodes[4].name = "tip 2";
+  b.model.nodes[4].translation = {4, 0, 0};
+  b.model.nodes[5].mesh = 1;
+  b.model.nodes[5].skin = 1;
+  b.model.nodes[5].translation = {200, 0, 0};
+  b.model.scenes[0].nodes = {0, 1, 3, 5};
+  tinygltf::Skin second = b.model.skins[0];
+  second.joints = joints;
+  second.skeleton = joints[0];
+  if (!matrices.empty())
+    second.inverseBindMatrices = b.accessor(matrices, kFloat, TINYGLTF_TYPE_MAT4);
+  b.model.skins.push_back(second);
+  return b;
+}
+
+// Meshes skinned by several skins share one: the skins' joints in order, each joint once, the
+// first skin's name, and a skeleton only when they share it. Two skeletons: the upper strip's
+// influences name joints 2 and 3, written as one skin of four joints and four inverse bind
+// matrices, read back the same. A joint that both skins bind alike (the tip) is one joint.
+TEST(Gltf, MeshesOfSeveralSkinsShareOneMergedSkin) {
+  const fs::path folder = scratch_folder("gltf_two_skins");
+  const fs::path in = folder / "strips.gltf";
+  strips_of_two_skins({3, 4}, {}).write(in);
+  apps::Read_report report;
+  const Mesh mesh =
+      apps::read_triangle_mesh(in.string(), &report, apps::Corner_attribute_reading::keep);
+  EXPECT_TRUE(report.left_out.empty());
+  EXPECT_EQ(mesh.number_of_faces(), 16u);
+  // Each strip's corners weigh its own skeleton's joints as the strip weighs joints 0 and 1.
+  const auto expect_influences = [](const Mesh& m, double tolerance) {
+    const Attributes a(m);
+    ASSERT_TRUE(a.skins);
+    for (const auto h : m.halfedges()) {
+      if (m.is_border(h)) continue;
+      const auto& p = m.point(m.target(h));
+      const std::uint16_t root = p.y() > 2 ? 2 : 0;
+      EXPECT_LE(p.x(), 4);  // untransformed
+      EXPECT_NEAR(weight_of((*a.skins)[h], root), 1 - p.x() / 4, tolerance);
+      EXPECT_NEAR(weight_of((*a.skins)[h], std::uint16_t(root + 1)), p.x() / 4, tolerance);
+    }
+  };
+  expect_influences(mesh, 0);
+  const fs::path out = folder / "out.gltf";
+  EXPECT_TRUE(apps::write_mesh_atomically(mesh, out.string(), report.materials).empty());
+  const nlohmann::json gltf = gltf_json(out);
+  ASSERT_EQ(gltf["skins"].size(), 1u);
+  const nlohmann::json& skin = gltf["skins"][0];
+  ASSERT_EQ(skin["joints"].size(), 4u);
+  std::vector<std::string> names;
+  for (const auto& joint : skin["joints"])
+    names.push_back(gltf["nodes"][joint.get<std::size_t>()]["name"]);
+  EXPECT_EQ(names, (std::vector<std::string>{"root", "tip", "root 2", "tip 2"}));
+  EXPECT_FALSE(skin.contains("skeleton"));
+  EXPECT_EQ(gltf["accessors"][skin["inverseBindMatrices"].get<std::size_t>()]["count"], 4);
+  apps::Read_report read_report;
+  const Mesh read =
+      apps::read_triangle_mesh(out.string(), &read_report, apps::Corner_attribute_reading::keep);
+  EXPECT_TRUE(read_report.left_out.empty());
+  expect_influences(read, 1e-7);
+
+  // Skin 1 binds the tip as skin 0 does, then the second root: three joints in all.
+  strips_of_two_skins({2, 3}, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -4, 0, 0, 1,  // the tip's
+                               1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0,  0, 0, 1})
+      .write(in);
+  const Mesh shared =
+      apps::read_triangle_mesh(in.string(), &report, apps::Corner_attribute_reading::keep);
+  const Attributes a(shared);
+  ASSERT_TRUE(a.skins);
+  for (const auto h : shared.halfedges()) {
+    if (shared.is_border(h) || shared.point(shared.target(h)).y() < 2) continue;
+    const double x = shared.point(shared.target(h)).x();
+    EXPECT_NEAR(weight_of((*a.skins)[h], 1), 1 - x / 4, 0);  // skin 1's joint 0: the tip
+    EXPECT_NEAR(weight_of((*a.skins)[h], 2), x / 4, 0);      // its joint 1: the second root
+  }
+  EXPECT_TRUE(apps::write_mesh_atomically(shared, out.string(), report.materials).empty());
+  EXPECT_EQ(gltf_json(out)["skins"][0]["joints"].size(), 3u);
+  fs::remove_all(folder);
+}
+
+// A mesh without a skin beside a skinned one rides on its own node: the strip again under a node
+// moved by 200 and turned a quarter about z, its points where the node puts them, each weighing 1
+// on the node, a joint of the skin bound where the node is (its inverse transform).
+TEST(Gltf, AnUnskinnedMeshBesideASkinnedOneRidesOnItsNode) {
+  const fs::path folder = scratch_folder("gltf_rigid");
+  const fs::path in = folder / "strips.gltf";
+  Gltf_builder b = skinned_strip();
+  b.model.nodes.emplace_back();
+  b.model.nodes.back().name = "prop";
+  b.model.nodes.back().mesh = 0;
+  b.model.nodes.back().translation = {200, 0, 0};
+  b.model.nodes.back().rotation = {0, 0, std::sqrt(0.5), std::sqrt(0.5)};
+  b.model.scenes[0].nodes.push_back(3);
+  b.write(in);
+  apps::Read_report report;
+  const Mesh mesh =
+      apps::read_triangle_mesh(in.string(), &report, apps::Corner_attribute_reading::keep);
+  EXPECT_TRUE(report.left_out.empty());
+  EXPECT_EQ(mesh.number_of_faces(), 16u);
+  const Attributes a(mesh);
+  ASSERT_TRUE(a.skins);
+  for (const auto h : mesh.halfedges()) {
+    if (mesh.is_border(h)) continue;
+    const auto& p = mesh.point(mesh.target(h));
+    if (p.x() < 100) continue;  // the skinned strip
+    // The quarter turn takes (x, y) to (-y, x).
+    EXPECT_GE(p.x(), 199 - 1e-12);
+    EXPECT_LE(p.x(), 200 + 1e-12);
+    EXPECT_GE(p.y(), -1e-12);
+    EXPECT_LE(p.y(), 4 + 1e-12);
+    EXPECT_EQ(weight_of((*a.skins)[h], 2), 1);
+  }
+  const fs::path out = folder / "out.gltf";
+  EXPECT_TRUE(apps::write_mesh_atomically(mesh, out.string(), report.materials).empty());
+  const nlohmann::json gltf = gltf_json(out);
+  ASSERT_EQ(gltf["skins"].size(), 1u);
+  const nlohmann::json& skin = gltf["skins"][0];
+  ASSERT_EQ(skin["joints"].size(), 3u);
+  EXPECT_EQ(gltf["nodes"][skin["joints"][2].get<std::size_t>()]["name"], "prop");
+  EXPECT_EQ(gltf["nodes"][skin["joints"][2].get<std::size_t>()]["translation"],
+            nlohmann::json::array({200.0, 0.0, 0.0}));
+  ASSERT_TRUE(report.materials.gltf);
+  const tinygltf::Model& looks = *report.materials.gltf;
+  const std::vector<float> matrices = kept_floats(looks, looks.skins[0].inverseBindMatrices);
+  ASSERT_EQ(matrices.size(), 48u);
+  // The inverse of the turn then the move: (x, y) to (y, 200 - x), as columns.
+  const std::vector<float> prop(matrices.begin() + 32, matrices.end());
+  const std::vector<float> expected = {0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1, 0, 0, 200, 0, 1};
+  for (std::size_t i = 0; i < 16; ++i) EXPECT_NEAR(prop[i], expected[i], 1e-5) << i;
+  fs::remove_all(folder);
+}
+
 // A skin the reader cannot carry as one set of influences is left out, in one line, and every mesh
-// is placed by its node's transform, the skinned one's too, as before: meshes with two skins,
-// skinned and unskinned meshes together, a skinned primitive without weights. A joint outside its
-// skin's range is bad input, one line.
+// is placed by its node's transform, the skinned one's too, as before: two skins that bind a joint
+// differently, an unskinned mesh whose node's transform cannot be undone, a skinned primitive
+// without weights. A joint outside its skin's range is bad input, one line.
 TEST(Gltf, SkinsThatCannotBeCarriedAreLeftOutInOneLine) {
   const fs::path folder = scratch_folder("gltf_skin_left_out");
   const fs::path in = folder / "strips.gltf";
@@ -2504,22 +2649,22 @@ TEST(Gltf, SkinsThatCannotBeCarriedAreLeftOutInOneLine) {
     b.write(in);
     return apps::read_triangle_mesh(in.string(), &report, apps::Corner_attribute_reading::keep);
   };
-  // A second node of the strip, moved by 200.
-  const auto two_strips = [](int second_skin) {
-    Gltf_builder b = skinned_strip();
-    b.model.nodes.emplace_back();
-    b.model.nodes.back().mesh = 0;
-    b.model.nodes.back().skin = second_skin;
-    b.model.nodes.back().translation = {200, 0, 0};
-    b.model.scenes[0].nodes.push_back(3);
-    if (second_skin == 1) b.model.skins.push_back(b.model.skins[0]);
-    return b;
-  };
+  // A second node of the strip, without a skin, flattened.
+  Gltf_builder flattened = skinned_strip();
+  flattened.model.nodes.emplace_back();
+  flattened.model.nodes.back().mesh = 0;
+  flattened.model.nodes.back().translation = {200, 0, 0};
+  flattened.model.nodes.back().scale = {1, 1, 0};
+  flattened.model.scenes[0].nodes.push_back(3);
   Gltf_builder no_weights = skinned_strip();
   no_weights.model.meshes[0].primitives[0].attributes.erase("WEIGHTS_0");
+  // Skin 1 binds the tip at the root's place.
+  const Gltf_builder conflicting = strips_of_two_skins(
+      {2, 3}, std::vector<float>{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1,
+                                 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});
   for (const auto& [b, cause, faces] :
-       {std::make_tuple(two_strips(1), std::string("more than one skin"), 16u),
-        std::make_tuple(two_strips(-1), std::string("skinned and unskinned meshes together"), 16u),
+       {std::make_tuple(conflicting, std::string("skin 0 and skin 1 bind node 2 differently"), 16u),
+        std::make_tuple(flattened, std::string("node 3's transform flattens its mesh"), 16u),
         std::make_tuple(no_weights, std::string("mesh 0 primitive 0 has no JOINTS_0 and WEIGHTS_0"),
                         8u)}) {
     SCOPED_TRACE(cause);

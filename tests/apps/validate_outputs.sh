@@ -4,6 +4,7 @@
 # Draco) as .glb and .gltf, bob with its texture missing, then bob with its texture as a data URI,
 # then bob with a second set of texture coordinates (TEXCOORD_1) in each encoding, then bob
 # skinned (JOINTS_0, WEIGHTS_0, three joints, an animation) in each encoding, alone and as levels,
+# then with an unskinned prop under a joint (a fourth joint),
 # then bob as a chain of levels of detail (--lod, MSFT_lod), then spot, the vertex-colour PLY and
 # bob's chain in the quantized and meshopt encodings (--gltf-encoding), and the Khronos
 # glTF-Validator (validate_gltf.mjs) must find no error in any of them; its warnings are printed.
@@ -147,6 +148,25 @@ for encoding in float quantized meshopt; do
       console.error(`${process.argv[1]}: no skin, joints or knee animation, or a node not skinned`);
       process.exit(1);
     }' "$work/bob_skinned_lod_$encoding.gltf"
+done
+# The skinned bob with a second bob under the knee, unskinned (a prop): it rides on its node, which
+# joins the skin as a fourth joint.
+node -e 'const fs = require("fs"), [gltf, out] = process.argv.slice(1);
+  const g = JSON.parse(fs.readFileSync(gltf));
+  const knee = g.nodes.findIndex((n) => n.name === "knee");
+  g.nodes.push({name: "prop", mesh: 0, translation: [0, 0, 2]});
+  g.nodes[knee].children.push(g.nodes.length - 1);
+  fs.writeFileSync(out, JSON.stringify(g));' "$work/bob_skinned_input.gltf" "$work/bob_prop_input.gltf"
+for encoding in float quantized; do
+  "$simplify" "$work/bob_prop_input.gltf" "$work/bob_prop_$encoding.gltf" 0.5 --quiet \
+    --gltf-encoding $encoding
+  outputs+=("$work/bob_prop_$encoding.gltf")
+  node -e 'const g = JSON.parse(require("fs").readFileSync(process.argv[1]));
+    const joints = g.skins ? g.skins[0].joints.map((j) => g.nodes[j].name) : [];
+    if (JSON.stringify(joints) !== JSON.stringify(["hip", "knee", "foot", "prop"])) {
+      console.error(`${process.argv[1]}: joints ${JSON.stringify(joints)}, expected the prop fourth`);
+      process.exit(1);
+    }' "$work/bob_prop_$encoding.gltf"
 done
 # A chain of levels of detail in one file (MSFT_lod), textured: bob with its map_Kd embedded; the
 # finest level's node must name the three coarser ones.
