@@ -90,7 +90,8 @@ class Fast_threshold_engine {
     Outcome outcome;
     double k = 0;  // a double: empty passes are skipped by jumping k
     for (std::size_t pass = 0; m_mesh.live_triangles() > target_faces; ++pass) {
-      if (pass % kCompactionPeriod == 0) m_mesh.compact();  // the deleted triangles leave the lists
+      // The deleted triangles leave the lists (the constructor's lists have none).
+      if (pass > 0 && pass % kCompactionPeriod == 0) m_mesh.compact();
       // The pass takes errors below t_k and the level cap: cheap edges first.
       const Pass_result result = run_pass(threshold_of_pass(k), level_cap(), target_faces);
       outcome.passes = pass + 1;
