@@ -2493,6 +2493,13 @@ TEST(Gltf, MoreThanFourInfluencesKeepTheFourHeaviest) {
   fs::remove_all(folder);
 }
 
+// The JSON of `mesh` written as glTF to `out`, which must bring no warning.
+nlohmann::json written_gltf(const Mesh& mesh, const fs::path& out,
+                            const apps::Material_references& materials) {
+  EXPECT_TRUE(apps::write_mesh_atomically(mesh, out.string(), materials).empty());
+  return gltf_json(out);
+}
+
 // The skinned strip and a second strip, 5 above it, of a mesh of its own, under a node moved by
 // 200 (which glTF ignores), skinned by skin 1: joints `joints` with inverse bind matrices
 // `matrices` (a copy of skin 0's when empty).
@@ -2550,8 +2557,7 @@ TEST(Gltf, MeshesOfSeveralSkinsShareOneMergedSkin) {
   };
   expect_influences(mesh, 0);
   const fs::path out = folder / "out.gltf";
-  EXPECT_TRUE(apps::write_mesh_atomically(mesh, out.string(), report.materials).empty());
-  const nlohmann::json gltf = gltf_json(out);
+  const nlohmann::json gltf = written_gltf(mesh, out, report.materials);
   ASSERT_EQ(gltf["skins"].size(), 1u);
   const nlohmann::json& skin = gltf["skins"][0];
   ASSERT_EQ(skin["joints"].size(), 4u);
@@ -2581,8 +2587,7 @@ TEST(Gltf, MeshesOfSeveralSkinsShareOneMergedSkin) {
     EXPECT_NEAR(weight_of((*a.skins)[h], 1), 1 - x / 4, 0);  // skin 1's joint 0: the tip
     EXPECT_NEAR(weight_of((*a.skins)[h], 2), x / 4, 0);      // its joint 1: the second root
   }
-  EXPECT_TRUE(apps::write_mesh_atomically(shared, out.string(), report.materials).empty());
-  EXPECT_EQ(gltf_json(out)["skins"][0]["joints"].size(), 3u);
+  EXPECT_EQ(written_gltf(shared, out, report.materials)["skins"][0]["joints"].size(), 3u);
   fs::remove_all(folder);
 }
 
@@ -2618,9 +2623,7 @@ TEST(Gltf, AnUnskinnedMeshBesideASkinnedOneRidesOnItsNode) {
     EXPECT_LE(p.y(), 4 + 1e-12);
     EXPECT_EQ(weight_of((*a.skins)[h], 2), 1);
   }
-  const fs::path out = folder / "out.gltf";
-  EXPECT_TRUE(apps::write_mesh_atomically(mesh, out.string(), report.materials).empty());
-  const nlohmann::json gltf = gltf_json(out);
+  const nlohmann::json gltf = written_gltf(mesh, folder / "out.gltf", report.materials);
   ASSERT_EQ(gltf["skins"].size(), 1u);
   const nlohmann::json& skin = gltf["skins"][0];
   ASSERT_EQ(skin["joints"].size(), 3u);
