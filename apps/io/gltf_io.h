@@ -49,19 +49,19 @@ struct Gltf_soup {
 // renormalised. Several skins are merged into one (each node a joint once), and a mesh without a
 // skin is placed by its node's transform, each vertex weighing 1 on that node, which joins the skin
 // bound where it stands; two skins that bind a node differently, or a node's transform that cannot
-// be inverted, leave the skin out. The skeleton's animations come too: each channel that turns, moves or scales
-// one of its nodes, with its sampler's times and values (glTF's types, KHR_mesh_quantization's
-// integers included, read as floats); an animation that loses a channel (of another node, of
-// morph target weights, without a sampler, or whose sampler cannot be read or whose times do not
-// increase) gets a line in `left_out`. Otherwise a skin is left out, `left_out` saying why, and
-// every mesh is placed by its node's transform; the animations are then left out, in one line. A
-// joint outside the skin's range, or a skin naming a node that does not exist, is bad input.
-// Throws Io_error (unreadable
-// input, "<path>: <cause>") for a file tinygltf cannot load (malformed JSON or GLB, a buffer file
-// missing), a required extension other than those three and KHR_texture_transform, compressed
-// data that do not decode, an accessor or index out of range, a position, normal, texture
-// coordinate or colour that is not finite. A node's MSFT_lod is not followed: this is the finest
-// level (read_gltf_levels reads them all).
+// be inverted, leave the skin out. The skeleton's animations come too: each channel that turns,
+// moves or scales one of its nodes, with its sampler's times and values (glTF's types,
+// KHR_mesh_quantization's integers included, read as floats); an animation that loses a channel (of
+// another node, of morph target weights, without a sampler, or whose sampler cannot be read or
+// whose times do not increase) gets a line in `left_out`. A skin left out (those cases, or a
+// skinned primitive without JOINTS_0 and WEIGHTS_0) gets a line saying why, and every mesh is
+// placed by its node's transform; the animations are then left out, in one line. A joint outside
+// the skin's range, or a skin naming a node that does not exist, is bad input. Throws Io_error
+// (unreadable input, "<path>: <cause>") for a file tinygltf cannot load (malformed JSON or GLB, a
+// buffer file missing), a required extension other than those three and KHR_texture_transform,
+// compressed data that do not decode, an accessor or index out of range, a position, normal,
+// texture coordinate or colour that is not finite. A node's MSFT_lod is not followed: this is the
+// finest level (read_gltf_levels reads them all).
 Gltf_soup read_gltf(const std::string& path, bool binary);
 
 // The levels of detail of the file at `path`, finest first, each read as read_gltf reads the file,
