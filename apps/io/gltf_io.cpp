@@ -9,6 +9,7 @@
 
 #include <CGAL/Bbox_3.h>
 #include <tiny_gltf.h>
+#include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -81,23 +82,11 @@ Matrix product(const Matrix& a, const Matrix& b) {
 
 // The inverse of an affine transform; none when it flattens space.
 std::optional<Matrix> affine_inverse(const Matrix& m) {
-  const auto at = [&m](int row, int col) { return m[std::size_t(col * 4 + row)]; };
-  const auto cofactor = [&at](int row, int col) {
-    const int r0 = (row + 1) % 3, r1 = (row + 2) % 3, c0 = (col + 1) % 3, c1 = (col + 2) % 3;
-    return at(r0, c0) * at(r1, c1) - at(r0, c1) * at(r1, c0);
-  };
-  const double det =
-      at(0, 0) * cofactor(0, 0) + at(0, 1) * cofactor(0, 1) + at(0, 2) * cofactor(0, 2);
-  if (!std::isnormal(det)) return std::nullopt;
-  Matrix inverse = kIdentity;
-  for (int row = 0; row < 3; ++row)
-    for (int col = 0; col < 3; ++col)
-      inverse[std::size_t(col * 4 + row)] = cofactor(col, row) / det;
-  for (int row = 0; row < 3; ++row) {
-    double t = 0;
-    for (int k = 0; k < 3; ++k) t -= inverse[std::size_t(k * 4 + row)] * at(k, 3);
-    inverse[std::size_t(12 + row)] = t;
-  }
+  const Eigen::Map<const Eigen::Matrix4d> transform(m.data());  // column-major, as glTF's
+  if (!std::isnormal(transform.topLeftCorner<3, 3>().determinant())) return std::nullopt;
+  Matrix inverse;
+  Eigen::Map<Eigen::Matrix4d>(inverse.data()) =
+      Eigen::Affine3d(transform).inverse(Eigen::Affine).matrix();
   return inverse;
 }
 
@@ -680,9 +669,9 @@ class Soup_builder {
                  std::size_t vertices, const std::string& what) {
     if (!m_skin) return false;
     if (mesh.skin < 0) {
-      const std::uint16_t joint = m_skin->rigid_joint_of.at(mesh.node);
-      for (std::size_t v = 0; v < vertices; ++v)
-        m_soup.corners.skins.push_back(Corner_attributes<Point>::normalized_skin({{joint, 1.0}}));
+      const auto on_the_node =
+          Corner_attributes<Point>::normalized_skin({{m_skin->rigid_joint_of.at(mesh.node), 1.0}});
+      m_soup.corners.skins.insert(m_soup.corners.skins.end(), vertices, on_the_node);
       return true;
     }
     const std::vector<std::uint16_t>& joint_of = m_skin->joint_of[std::size_t(mesh.skin)];
@@ -883,16 +872,14 @@ std::vector<double> inverse_bind_matrices(const std::string& path, const tinyglt
   return matrices;
 }
 
-// The skins of the meshes `levels` place, as one: each skin's joints in the order of the skins,
-// then the node of each mesh without a skin as a joint of its own, bound where the node is. A node
-// that two of them bind must be bound alike, else `reason` says which do not and there is none.
+// `skins`, those of the meshes `levels` place, as one: each skin's joints in the order of the
+// skins, then the node of each mesh without a skin as a joint of its own, bound where the node is.
+// A node that two of them bind must be bound alike, else `reason` says which do not and there is
+// none.
 std::optional<Carried_skin> merged_skins(const std::string& path, const tinygltf::Model& model,
+                                         const std::set<int>& skins,
                                          const std::vector<std::vector<Placed_mesh>>& levels,
                                          std::string& reason) {
-  std::set<int> skins;
-  for (const std::vector<Placed_mesh>& placed : levels)
-    for (const Placed_mesh& mesh : placed)
-      if (mesh.skin >= 0) skins.insert(mesh.skin);
   Carried_skin merged;
   merged.joint_of.resize(model.skins.size());
   merged.skeleton = model.skins[std::size_t(*skins.begin())].skeleton;
@@ -923,13 +910,12 @@ std::optional<Carried_skin> merged_skins(const std::string& path, const tinygltf
   for (int skin : skins) {
     const tinygltf::Skin& input = model.skins[std::size_t(skin)];
     if (input.skeleton != merged.skeleton) merged.skeleton = -1;
-    for (int node : input.joints)
+    std::vector<int> named = input.joints;
+    if (input.skeleton >= 0) named.push_back(input.skeleton);
+    for (int node : named)
       if (node < 0 || std::size_t(node) >= model.nodes.size())
         fail(path, "skin " + std::to_string(skin) + " names node " + std::to_string(node) +
                        ", which does not exist");
-    if (input.skeleton >= 0 && std::size_t(input.skeleton) >= model.nodes.size())
-      fail(path, "skin " + std::to_string(skin) + " names node " + std::to_string(input.skeleton) +
-                     ", which does not exist");
     any_matrices = any_matrices || input.inverseBindMatrices >= 0;
     const std::vector<double> matrices = inverse_bind_matrices(path, model, skin);
     for (std::size_t j = 0; j < input.joints.size(); ++j) {
@@ -964,14 +950,14 @@ std::optional<Carried_skin> merged_skins(const std::string& path, const tinygltf
 std::optional<Carried_skin> carried_skin(const std::string& path, const tinygltf::Model& model,
                                          const std::vector<std::vector<Placed_mesh>>& levels,
                                          std::vector<std::string>& left_out) {
-  bool skinned = false;
+  std::set<int> skins;
   std::string reason;
   for (const std::vector<Placed_mesh>& placed : levels)
     for (const Placed_mesh& mesh : placed) {
       if (mesh.skin < 0) continue;
       if (std::size_t(mesh.skin) >= model.skins.size())
         fail(path, "skin " + std::to_string(mesh.skin) + " does not exist");
-      skinned = true;
+      skins.insert(mesh.skin);
       const std::vector<tinygltf::Primitive>& primitives = primitives_of(path, model, mesh.mesh);
       for (std::size_t p = 0; p < primitives.size() && reason.empty(); ++p) {
         const tinygltf::Primitive& primitive = primitives[p];
@@ -982,9 +968,9 @@ std::optional<Carried_skin> carried_skin(const std::string& path, const tinygltf
                    " has no JOINTS_0 and WEIGHTS_0";
       }
     }
-  if (!skinned) return std::nullopt;
+  if (skins.empty()) return std::nullopt;
   if (reason.empty())
-    if (std::optional<Carried_skin> merged = merged_skins(path, model, levels, reason))
+    if (std::optional<Carried_skin> merged = merged_skins(path, model, skins, levels, reason))
       return merged;
   left_out.push_back(path + ": the skin is left out (" + reason +
                      "); every mesh is placed by its node's transform");
