@@ -1,10 +1,50 @@
 #include "Offscreen_context.h"
 
 #include <GL/osmesa.h>
+#include <dlfcn.h>
 
 #include <stdexcept>
+#include <string>
 
 namespace apps {
+namespace {
+
+// OSMesa is opened when the first picture is asked for: linked, it brings LLVM along, whose
+// relocation made up most of the start of every run of the tools that can draw.
+struct Osmesa_library {
+  decltype(&OSMesaCreateContextAttribs) create_context;
+  decltype(&OSMesaMakeCurrent) make_current;
+  decltype(&OSMesaDestroyContext) destroy_context;
+  decltype(&OSMesaGetProcAddress) proc_address;
+};
+
+template <typename Function>
+void find_function(void* library, const char* name, Function& function) {
+  void* const found = dlsym(library, name);
+  if (found == nullptr)
+    throw std::runtime_error(std::string("OSMesa has no ") + name + " (" +
+                             CGAL_POLICIES_OSMESA_LIBRARY + ")");
+  function = reinterpret_cast<Function>(found);
+}
+
+Osmesa_library open_osmesa() {
+  void* const library = dlopen(CGAL_POLICIES_OSMESA_LIBRARY, RTLD_NOW | RTLD_LOCAL);
+  if (library == nullptr) throw std::runtime_error(std::string("cannot open OSMesa: ") + dlerror());
+  Osmesa_library osmesa;
+  find_function(library, "OSMesaCreateContextAttribs", osmesa.create_context);
+  find_function(library, "OSMesaMakeCurrent", osmesa.make_current);
+  find_function(library, "OSMesaDestroyContext", osmesa.destroy_context);
+  find_function(library, "OSMesaGetProcAddress", osmesa.proc_address);
+  return osmesa;
+}
+
+// Opened once, and kept open: the contexts' GL functions live in it.
+const Osmesa_library& osmesa() {
+  static const Osmesa_library library = open_osmesa();
+  return library;
+}
+
+}  // namespace
 
 struct Offscreen_context::Impl {
   OSMesaContext context = nullptr;
@@ -24,22 +64,23 @@ Offscreen_context::Offscreen_context(int width, int height) : m_impl(std::make_u
                             OSMESA_CONTEXT_MINOR_VERSION,
                             3,
                             0};
-  m_impl->context = OSMesaCreateContextAttribs(attributes, nullptr);
+  m_impl->context = osmesa().create_context(attributes, nullptr);
   if (!m_impl->context) throw std::runtime_error("OSMesa offers no OpenGL 3.3 core context");
   m_impl->width = width;
   m_impl->height = height;
   m_impl->rgba.resize(std::size_t(width) * std::size_t(height) * 4);
-  if (!OSMesaMakeCurrent(m_impl->context, m_impl->rgba.data(), GL_UNSIGNED_BYTE, width, height)) {
-    OSMesaDestroyContext(m_impl->context);
+  if (!osmesa().make_current(m_impl->context, m_impl->rgba.data(), GL_UNSIGNED_BYTE, width,
+                             height)) {
+    osmesa().destroy_context(m_impl->context);
     throw std::runtime_error("OSMesa cannot render a " + std::to_string(width) + "x" +
                              std::to_string(height) + " picture");
   }
 }
 
-Offscreen_context::~Offscreen_context() { OSMesaDestroyContext(m_impl->context); }
+Offscreen_context::~Offscreen_context() { osmesa().destroy_context(m_impl->context); }
 
 Gl_loader Offscreen_context::loader() const {
-  return [](const char* name) { return Gl_proc(OSMesaGetProcAddress(name)); };
+  return [](const char* name) { return Gl_proc(osmesa().proc_address(name)); };
 }
 
 std::vector<std::uint8_t> Offscreen_context::rgb_pixels() const {

@@ -362,6 +362,26 @@ TEST_F(Cli, ASnapshotThatCannotBeWrittenLeavesNoMeshEither) {
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(older), {}), "an older output");
 }
 
+TEST_F(Cli, OsmesaIsOpenedOnlyForAPicture) {
+  if (run("simplify", "--help").out.find("not in this build") != std::string::npos)
+    GTEST_SKIP() << "this build has no snapshots";
+  // The dynamic loader's trace names every library it opens. Linked, OSMesa and the LLVM it brings
+  // along were most of the start of every run.
+  const fs::path in = write("tet.off", kTetrahedronOff);
+  const std::string args = in.string() + " " + file("out.off").string() + " 1 --quiet";
+  ASSERT_EQ(::setenv("LD_DEBUG", "libs", 1), 0);
+  const Command_result plain = run("simplify", args);
+  const Command_result drawn =
+      run("simplify", args + " --snapshot " + file("tet.png").string() + " --size 32x16");
+  ASSERT_EQ(::unsetenv("LD_DEBUG"), 0);
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  ASSERT_EQ(drawn.exit_code, 0) << drawn.err;
+  EXPECT_EQ(plain.err.find("libOSMesa"), std::string::npos);
+  EXPECT_EQ(plain.err.find("libLLVM"), std::string::npos);
+  EXPECT_NE(drawn.err.find("libOSMesa"), std::string::npos);
+  EXPECT_TRUE(fs::exists(file("tet.png")));
+}
+
 TEST_F(Cli, MaxErrorBoundsEveryEdgeCollapsePolicy) {
   // A sphere of 320 faces: curved everywhere, so a bound of 1% of its diagonal stops every policy
   // early (near 140 faces), and small enough for the sanitized build, where certifying 1,280
