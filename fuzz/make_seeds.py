@@ -7,6 +7,8 @@ ASCII and binary PLY, OFF, ASCII and binary STL) and in the binary soup layout o
 the repair and policy targets. Deterministic: running it again writes the same bytes.
 Usage: fuzz/make_seeds.py (from anywhere; it finds the repository from its own path).
 """
+import base64
+import json
 import os
 import struct
 
@@ -151,6 +153,71 @@ def write(target, name, data):
         f.write(data)
 
 
+def skinned_gltf(path):
+    """The glTF at `path` (one mesh, one node, its buffer a data URI) with its mesh on three nodes:
+    two under skins that share a joint (hip-knee, knee-foot; weights along x), which put it in the
+    same place, and one unskinned, a prop under the knee; an animation turns the knee. The reader
+    merges the skins and the prop's node into one skin."""
+    with open(path) as f:
+        g = json.load(f)
+    data = bytearray(base64.b64decode(g["buffers"][0]["uri"].split(",")[1]))
+
+    def append(blob, target=None):
+        data.extend(bytes((4 - len(data) % 4) % 4))
+        view = {"buffer": 0, "byteOffset": len(data), "byteLength": len(blob)}
+        if target:
+            view["target"] = target
+        data.extend(blob)
+        g["bufferViews"].append(view)
+        return len(g["bufferViews"]) - 1
+
+    def accessor(view, component, kind, count, **bounds):
+        g["accessors"].append(dict(bufferView=view, componentType=component, type=kind,
+                                   count=count, **bounds))
+        return len(g["accessors"]) - 1
+
+    primitive = g["meshes"][0]["primitives"][0]
+    positions = g["accessors"][primitive["attributes"]["POSITION"]]
+    view = g["bufferViews"][positions["bufferView"]]
+    low, high = positions["min"][0], positions["max"][0]
+    joints, weights = b"", b""
+    for v in range(positions["count"]):
+        x = struct.unpack_from("<f", data, view.get("byteOffset", 0) + 12 * v)[0]
+        t = (x - low) / (high - low)
+        joints += struct.pack("<4B", 0, 1, 0, 0)
+        weights += struct.pack("<4f", 1 - t, t, 0, 0)
+    primitive["attributes"]["JOINTS_0"] = accessor(append(joints, 34962), 5121, "VEC4",
+                                                   positions["count"])
+    primitive["attributes"]["WEIGHTS_0"] = accessor(append(weights, 34962), 5126, "VEC4",
+                                                    positions["count"])
+
+    def binding(x):
+        return struct.pack("<16f", 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -x, 0, 0, 1)
+
+    middle = (low + high) / 2
+    first = len(g["nodes"])
+    hip, knee, foot, second, prop = range(first, first + 5)
+    g["nodes"] += [{"name": "hip", "translation": [low, 0, 0], "children": [knee]},
+                   {"name": "knee", "translation": [middle - low, 0, 0], "children": [foot, prop]},
+                   {"name": "foot", "translation": [high - middle, 0, 0]},
+                   {"name": "second", "mesh": 0, "skin": 1},
+                   {"name": "prop", "mesh": 0, "translation": [0, 0, 2]}]
+    g["nodes"][0]["skin"] = 0
+    g["skins"] = [
+        {"joints": [hip, knee], "inverseBindMatrices": accessor(
+            append(binding(low) + binding(middle)), 5126, "MAT4", 2)},
+        {"joints": [knee, foot], "inverseBindMatrices": accessor(
+            append(binding(middle) + binding(high)), 5126, "MAT4", 2)}]
+    times = accessor(append(struct.pack("<2f", 0, 1)), 5126, "SCALAR", 2, min=[0], max=[1])
+    turn = accessor(append(struct.pack("<8f", 0, 0, 0, 1, 0, 0, 0.6, 0.8)), 5126, "VEC4", 2)
+    g["animations"] = [{"name": "bend", "samplers": [{"input": times, "output": turn}],
+                        "channels": [{"sampler": 0, "target": {"node": knee, "path": "rotation"}}]}]
+    g["scenes"][0]["nodes"] += [hip, second]
+    g["buffers"][0] = {"byteLength": len(data), "uri": "data:application/octet-stream;base64,"
+                       + base64.b64encode(bytes(data)).decode()}
+    return json.dumps(g, separators=(",", ":")).encode()
+
+
 def main():
     for mesh in MESHES:
         points, faces = read_obj(os.path.join(ROOT, "data", mesh))
@@ -183,6 +250,8 @@ def main():
             "in.obj out.obj --faces=100 --merge-distance=0.001 --smooth-weights inverse-distance "
             "--smooth-method taubin"]):
         write("command_line", "line%d" % i, line.replace(" ", "\0").encode())
+    write("read_gltf", "bob_40_faces_skins.gltf",
+          skinned_gltf(os.path.join(CORPUS, "read_gltf", "bob_40_faces.gltf")))
 
 
 if __name__ == "__main__":
