@@ -37,6 +37,7 @@
 #include <map>
 #include <numeric>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <vector>
 
@@ -85,7 +86,7 @@ class Corner_attribute_carrier {
       return false;
     };
     switch (internal::seam_collapse_rule(
-        seam_edges_at(profile.v0()), seam_edges_at(profile.v1()),
+        seam_edges_for_rules(profile.v0()), seam_edges_for_rules(profile.v1()),
         [&] { return is_seam_edge(edge); }, closes_chart,
         [&] {
           return CGAL::squared_distance(proposed, profile.p0()) <
@@ -155,17 +156,24 @@ class Corner_attribute_carrier {
 
   // Before edge_collapse starts. CGAL first collapses every edge of zero length, with no placement,
   // filter or OnCollapsing (Edge_collapse.h, collect()). Such a collapse moves no point, so every
-  // face around it keeps its values: they are recorded here and put back by collapsed().
+  // face around it keeps its values: they are recorded here and put back by collapsed(). It merges
+  // the edges of its two faces, which may leave a seam corner nearby with two seam edges or none;
+  // the points of those corners are recorded too, and the seam rules keep them.
   void started() {
     m_started = true;
     m_checked.reset();
     m_unmoved.clear();
+    m_corners_near_zero_length_edges.clear();
     for (auto e : m_mesh->edges()) {
       const Halfedge h = m_mesh->halfedge(e);
       if (m_mesh->point(m_mesh->source(h)) != m_mesh->point(m_mesh->target(h))) continue;
       for (Vertex v : {m_mesh->source(h), m_mesh->target(h)})
-        for (Halfedge around : CGAL::halfedges_around_target(v, *m_mesh))
+        for (Halfedge around : CGAL::halfedges_around_target(v, *m_mesh)) {
+          for (Vertex near : {v, m_mesh->source(around)})
+            if (is_seam_corner(seam_edges_at(near)))
+              m_corners_near_zero_length_edges.insert(m_mesh->point(near));
           if (!m_mesh->is_border(around)) record_unmoved(m_mesh->face(around));
+        }
     }
   }
 
@@ -268,6 +276,18 @@ class Corner_attribute_carrier {
   }
 
   static constexpr std::size_t kUnknown = std::numeric_limits<std::size_t>::max();
+
+  // Where seams meet or end: a count of seam edges the seam rules never move.
+  static bool is_seam_corner(std::size_t seam_edges) { return seam_edges != 0 && seam_edges != 2; }
+
+  // seam_edges_at(v), but a seam corner near an edge of zero length (started()) stays one.
+  std::size_t seam_edges_for_rules(Vertex v) const {
+    const std::size_t count = seam_edges_at(v);
+    if (is_seam_corner(count) || m_corners_near_zero_length_edges.empty() ||
+        m_corners_near_zero_length_edges.count(m_mesh->point(v)) == 0)
+      return count;
+    return 1;  // a seam's end: a corner
+  }
 
   // A face's corners as they were: the vertex of each, and its values.
   struct Face_values {
@@ -428,7 +448,8 @@ class Corner_attribute_carrier {
   bool m_started = false;  // started() was called: a visitor feeds the carrier
   std::vector<Pending_face> m_pending;
   std::map<Face, Face_values> m_unmoved;  // faces around edges of zero length, until the loop
-  mutable std::vector<std::size_t> m_seam_counts;  // kUnknown until asked
+  std::set<Point> m_corners_near_zero_length_edges;  // their points
+  mutable std::vector<std::size_t> m_seam_counts;    // kUnknown until asked
   mutable std::optional<Checked_collapse> m_checked;
   mutable std::optional<Accepted_collapse> m_accepted;  // until the collapse it names, or another
 };
