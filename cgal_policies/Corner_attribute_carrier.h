@@ -167,13 +167,13 @@ class Corner_attribute_carrier {
     for (auto e : m_mesh->edges()) {
       const Halfedge h = m_mesh->halfedge(e);
       if (m_mesh->point(m_mesh->source(h)) != m_mesh->point(m_mesh->target(h))) continue;
-      for (Vertex v : {m_mesh->source(h), m_mesh->target(h)})
+      for (Vertex v : {m_mesh->source(h), m_mesh->target(h)}) {
+        record_if_seam_corner(v);
         for (Halfedge around : CGAL::halfedges_around_target(v, *m_mesh)) {
-          for (Vertex near : {v, m_mesh->source(around)})
-            if (is_seam_corner(seam_edges_at(near)))
-              m_corners_near_zero_length_edges.insert(m_mesh->point(near));
+          record_if_seam_corner(m_mesh->source(around));
           if (!m_mesh->is_border(around)) record_unmoved(m_mesh->face(around));
         }
+      }
     }
   }
 
@@ -277,13 +277,15 @@ class Corner_attribute_carrier {
 
   static constexpr std::size_t kUnknown = std::numeric_limits<std::size_t>::max();
 
-  // Where seams meet or end: a count of seam edges the seam rules never move.
-  static bool is_seam_corner(std::size_t seam_edges) { return seam_edges != 0 && seam_edges != 2; }
+  void record_if_seam_corner(Vertex v) {
+    if (internal::is_seam_corner(seam_edges_at(v)))
+      m_corners_near_zero_length_edges.insert(m_mesh->point(v));
+  }
 
   // seam_edges_at(v), but a seam corner near an edge of zero length (started()) stays one.
   std::size_t seam_edges_for_rules(Vertex v) const {
     const std::size_t count = seam_edges_at(v);
-    if (is_seam_corner(count) || m_corners_near_zero_length_edges.empty() ||
+    if (internal::is_seam_corner(count) ||
         m_corners_near_zero_length_edges.count(m_mesh->point(v)) == 0)
       return count;
     return 1;  // a seam's end: a corner

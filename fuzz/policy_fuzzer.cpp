@@ -18,6 +18,7 @@
 
 #include <cgal_policies/Corner_attribute_carrier.h>
 #include <cgal_policies/Corner_attributes.h>
+#include <cgal_policies/internal/seam_collapse_rule.h>
 
 #include <algorithm>
 #include <cmath>
@@ -73,10 +74,9 @@ Seam_record record_seams(apps::Mesh& mesh) {
   for (const auto f : mesh.faces())
     record.uv_areas[(*attributes.materials)[f]] = attributes.face_uv_area(mesh, f);
   const Carrier carrier(mesh);
-  for (const auto v : mesh.vertices()) {
-    const std::size_t seams = carrier.seam_edges_at(v);
-    if (seams != 0 && seams != 2) record.seam_corners.push_back(mesh.point(v));
-  }
+  for (const auto v : mesh.vertices())
+    if (cgal_policies::internal::is_seam_corner(carrier.seam_edges_at(v)))
+      record.seam_corners.push_back(mesh.point(v));
   return record;
 }
 

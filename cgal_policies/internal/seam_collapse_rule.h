@@ -10,6 +10,10 @@ namespace internal {
 
 enum class Seam_placement { anywhere, at_first, at_second, nowhere };
 
+// A seam corner, where seams meet or end: neither on no seam nor merely along one. The rule below
+// never moves it.
+inline bool is_seam_corner(std::size_t seam_edges) { return seam_edges != 0 && seam_edges != 2; }
+
 // Where the collapse of an edge may put the kept vertex, given the seam edges at its first and
 // second end: a free vertex goes to a seam vertex; two seam vertices merge only along a seam edge
 // (is_seam_edge()), at the end that is not merely along the seam (the nearer one to the policy's

@@ -133,6 +133,11 @@ class Cli : public testing::Test {
             read_text(file("stderr"))};
   }
 
+  // Whether this build draws snapshots (built with the viewer); without, simplify's help says so.
+  bool snapshots_in_this_build() const {
+    return run("simplify", "--help").out.find("not in this build") == std::string::npos;
+  }
+
   // A failure: the expected code, exactly one line on stderr naming `path`, and no output file.
   void expect_failure(const std::string& args, int code, const fs::path& named,
                       const fs::path& output) const {
@@ -345,8 +350,7 @@ TEST_F(Cli, MeshErrorComparesCornerAttributesWhenAsked) {
 
 TEST_F(Cli, ASnapshotThatCannotBeWrittenLeavesNoMeshEither) {
   // Builds without the viewer refuse --snapshot as bad usage, before reading anything.
-  const bool with_viewer =
-      run("simplify", "--help").out.find("not in this build") == std::string::npos;
+  const bool with_viewer = snapshots_in_this_build();
   const fs::path in = write("tet.off", kTetrahedronOff), out = file("out.off");
   const fs::path png = file("no_such_folder") / "picture.png";
   expect_failure(in.string() + " " + out.string() + " 1 --snapshot " + png.string(),
@@ -363,8 +367,7 @@ TEST_F(Cli, ASnapshotThatCannotBeWrittenLeavesNoMeshEither) {
 }
 
 TEST_F(Cli, OsmesaIsOpenedOnlyForAPicture) {
-  if (run("simplify", "--help").out.find("not in this build") != std::string::npos)
-    GTEST_SKIP() << "this build has no snapshots";
+  if (!snapshots_in_this_build()) GTEST_SKIP() << "this build has no snapshots";
   // The dynamic loader's trace names every library it opens. Linked, OSMesa and the LLVM it brings
   // along were most of the start of every run.
   const fs::path in = write("tet.off", kTetrahedronOff);
@@ -500,8 +503,7 @@ TEST_F(Cli, AMissingOutputFolderIsRefusedBeforeTheInputIsRead) {
   const fs::path in = file("missing.off"), folder = file("no_such_folder");
   const fs::path out = folder / "out.off";
   expect_failure(in.string() + " " + out.string() + " 0.5", 4, out, out);
-  const bool with_viewer =
-      run("simplify", "--help").out.find("not in this build") == std::string::npos;
+  const bool with_viewer = snapshots_in_this_build();
   if (!with_viewer) return;  // --snapshot is then bad usage, before reading too
   const fs::path png = folder / "picture.png";
   expect_failure(in.string() + " " + file("out.off").string() + " 0.5 --snapshot " + png.string(),
@@ -717,8 +719,7 @@ int interrupt_while_writing(std::vector<std::string> args, const fs::path& out, 
 }
 
 TEST_F(Cli, AnInterruptWhileWritingLeavesTheOldOutputAndNoTemporary) {
-  const bool with_viewer =
-      run("simplify", "--help").out.find("not in this build") == std::string::npos;
+  const bool with_viewer = snapshots_in_this_build();
   const fs::path out = file("cow.off"), png = file("cow.png");
   const std::string old_output = "an older output";
   for (const int signal : {SIGINT, SIGTERM}) {
