@@ -19,6 +19,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <optional>
@@ -61,6 +62,8 @@ class Fast_threshold_engine {
   // The level cap: a pass takes only errors within this share of the open triangles (neither
   // deleted nor refused since they changed), so that cheap edges still go first (docs/fast.md).
   static constexpr double kPassShare = 0.2;
+  // The pass indexes are doubles (idle passes are jumped); above this one they are not all exact.
+  static constexpr double kLargestExactIndex = double(std::uint64_t(1) << 53);
   // Passes between two rebuilds of the reference lists.
   static constexpr std::size_t kCompactionPeriod = 5;
 
@@ -210,7 +213,9 @@ class Fast_threshold_engine {
     const double relative = pass.smallest_waiting / (kThresholdScale * m_squared_diagonal);
     double next =
         (std::max)(k + 1, std::ceil(std::pow(relative, 1.0 / m_options.aggressiveness)) - 3);
-    while (threshold_of_pass(next) <= pass.smallest_waiting) next += 1;
+    // Past 2^53 a step of one is lost in the rounding: the step doubles there, so the search ends.
+    for (double step = 1; threshold_of_pass(next) <= pass.smallest_waiting; next += step)
+      if (next >= kLargestExactIndex) step *= 2;
     return next;
   }
 
