@@ -62,8 +62,9 @@ class Fast_threshold_engine {
   // The level cap: a pass takes only errors within this share of the open triangles (neither
   // deleted nor refused since they changed), so that cheap edges still go first (docs/fast.md).
   static constexpr double kPassShare = 0.2;
-  // The pass indexes are doubles (idle passes are jumped); above this one they are not all exact.
-  static constexpr double kLargestExactIndex = double(std::uint64_t(1) << 53);
+  // The pass indexes are doubles (idle passes are jumped); above 2^53 they are not all exact.
+  static constexpr double kLargestExactIndex =
+      double(std::uint64_t(1) << std::numeric_limits<double>::digits);
   // Passes between two rebuilds of the reference lists.
   static constexpr std::size_t kCompactionPeriod = 5;
 
