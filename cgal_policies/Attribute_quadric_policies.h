@@ -25,7 +25,7 @@
 #include <cgal_policies/Corner_attribute_carrier.h>
 #include <cgal_policies/Face_weighting.h>
 #include <cgal_policies/internal/Attribute_quadric.h>
-#include <cgal_policies/internal/Optional.h>
+#include <cgal_policies/internal/cgal_version.h>
 #include <cgal_policies/internal/mesh_geometry.h>
 #include <cgal_policies/internal/plane_quadrics.h>
 #include <cgal_policies/internal/quadric_placement.h>

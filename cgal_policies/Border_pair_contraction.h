@@ -73,7 +73,7 @@ class Border_pair_contraction {
       for (Halfedge h : halfedges(tm)) put(id, h, -1);
       int loops = 0;
       for (Halfedge h : halfedges(tm)) {
-        if (!is_border(h, tm) || get(id, h) >= 0) continue;
+        if (!CGAL::is_border(h, tm) || get(id, h) >= 0) continue;
         for (Halfedge g : CGAL::halfedges_around_face(h, tm)) {
           put(id, g, loops);
           vertex.push_back(source(g, tm));

@@ -8,7 +8,7 @@
 #ifndef CGAL_POLICIES_BOUNDED_NORMAL_ANGLE_FILTER_H
 #define CGAL_POLICIES_BOUNDED_NORMAL_ANGLE_FILTER_H
 
-#include <cgal_policies/internal/Optional.h>
+#include <cgal_policies/internal/cgal_version.h>
 #include <cgal_policies/internal/mesh_geometry.h>
 
 #include <CGAL/Surface_mesh_simplification/internal/Common.h>

@@ -10,6 +10,8 @@
 #ifndef CGAL_POLICIES_CORNER_ATTRIBUTES_H
 #define CGAL_POLICIES_CORNER_ATTRIBUTES_H
 
+#include <cgal_policies/internal/cgal_version.h>
+
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -299,9 +301,7 @@ class Corner_attributes {
   template <class Index, class Value>
   static std::optional<typename Mesh::template Property_map<Index, Value>> find(const Mesh& mesh,
                                                                                 const char* name) {
-    const auto [map, found] = mesh.template property_map<Index, Value>(name);
-    if (!found) return std::nullopt;
-    return map;
+    return internal::find_property_map<Index, Value>(mesh, name);
   }
 };
 

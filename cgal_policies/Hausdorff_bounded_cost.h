@@ -16,7 +16,7 @@
 #include <cgal_policies/Classic_quadric_policies.h>
 #include <cgal_policies/Hausdorff_bounded_options.h>
 #include <cgal_policies/internal/Hausdorff_bounded_state.h>
-#include <cgal_policies/internal/Optional.h>
+#include <cgal_policies/internal/cgal_version.h>
 
 #include <CGAL/assertions.h>
 #include <CGAL/tags.h>

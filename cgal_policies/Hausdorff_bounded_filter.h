@@ -21,7 +21,7 @@
 #include <cgal_policies/Bounded_normal_angle_filter.h>
 #include <cgal_policies/Hausdorff_bounded_options.h>
 #include <cgal_policies/internal/Hausdorff_bounded_state.h>
-#include <cgal_policies/internal/Optional.h>
+#include <cgal_policies/internal/cgal_version.h>
 #include <cgal_policies/internal/hausdorff_candidates.h>
 
 #include <CGAL/Surface_mesh_simplification/internal/Common.h>

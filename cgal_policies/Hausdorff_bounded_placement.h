@@ -14,7 +14,7 @@
 
 #include <cgal_policies/Classic_quadric_policies.h>
 #include <cgal_policies/Hausdorff_bounded_options.h>
-#include <cgal_policies/internal/Optional.h>
+#include <cgal_policies/internal/cgal_version.h>
 #include <cgal_policies/internal/hausdorff_candidates.h>
 #include <cgal_policies/internal/mesh_geometry.h>
 

@@ -6,7 +6,7 @@
 #define CGAL_POLICIES_SEAM_KEEPING_PLACEMENT_H
 
 #include <cgal_policies/Corner_attribute_carrier.h>
-#include <cgal_policies/internal/Optional.h>
+#include <cgal_policies/internal/cgal_version.h>
 
 namespace cgal_policies {
 

@@ -1,5 +1,9 @@
 // Simplification_pipeline: the whole pass order of this suite on a CGAL::Surface_mesh, the one
-// place that orders the passes (docs/pipeline.md). Each pass runs only when its options ask for it:
+// place that orders the passes (docs/pipeline.md). A Surface_mesh only, by design: the passes keep
+// their state and the corner attributes in its property maps and cut, spill and rebuild it; the
+// policies and passes it runs, but those that carry corner attributes, take any mesh type on
+// their own (docs/compatibility.md), and simplify() refuses another type at compile time. Each
+// pass runs only when its options ask for it:
 //   1. merge           Border_pair_contraction stitches border pairs closer than merge_distance
 //   2. components      components of fewer than min_component faces go, but the largest
 //   3. simplification  the policy down to the target, carrying the corner attributes
@@ -31,6 +35,7 @@
 #include <cgal_policies/Laplacian_smoother.h>
 #include <cgal_policies/Simplification_options.h>
 #include <cgal_policies/Simplification_report.h>
+#include <cgal_policies/internal/Is_surface_mesh.h>
 #include <cgal_policies/internal/Part_progress.h>
 #include <cgal_policies/internal/Partitioned_job_files.h>
 #include <cgal_policies/internal/Spilled_input.h>
@@ -684,6 +689,17 @@ template <class Point>
 Simplification_report simplify(CGAL::Surface_mesh<Point>& mesh,
                                const Simplification_options& options = {}) {
   return Simplification_pipeline<Point>(options).run(mesh);
+}
+
+// Any other mesh type is refused here, at compile time: the pipeline keeps its state in a
+// Surface_mesh's property maps and rebuilds the mesh between passes.
+template <class TriangleMesh>
+Simplification_report simplify(TriangleMesh&, const Simplification_options& = {}) {
+  static_assert(internal::Is_surface_mesh<TriangleMesh>::value,
+                "cgal_policies::simplify runs on a CGAL::Surface_mesh only: copy the mesh into "
+                "one (CGAL::copy_face_graph), or run a policy of the library in "
+                "SMS::edge_collapse, which takes any mesh type");
+  return {};
 }
 
 }  // namespace cgal_policies

@@ -1,9 +1,13 @@
 // Dropping small connected components whole: the specks and fragments around a scanned surface are
 // components of their own, which edge collapses cannot shrink below a few faces each.
 // Simplification_pipeline drops them before the run (min_component) or after it
-// (drop_small_pieces). For a CGAL::Surface_mesh; the mesh is left compact (garbage collected).
+// (drop_small_pieces). For any face graph; a CGAL::Surface_mesh is left compact (garbage
+// collected).
 #ifndef CGAL_POLICIES_SMALL_COMPONENTS_H
 #define CGAL_POLICIES_SMALL_COMPONENTS_H
+
+#include <cgal_policies/internal/Is_surface_mesh.h>
+#include <cgal_policies/internal/face_count.h>
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/boost/graph/properties.h>
@@ -24,8 +28,8 @@ namespace internal {
 
 // Removes whole components, smallest first (the first found among equals), while
 // keep_dropping(component faces, faces left) holds; never the largest one.
-template <typename SurfaceMesh, typename KeepDropping>
-Dropped_components drop_smallest_while(SurfaceMesh& mesh, const KeepDropping& keep_dropping) {
+template <typename FaceGraph, typename KeepDropping>
+Dropped_components drop_smallest_while(FaceGraph& mesh, const KeepDropping& keep_dropping) {
   namespace PMP = CGAL::Polygon_mesh_processing;
   auto components = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
   std::vector<std::size_t> sizes(PMP::connected_components(mesh, components), 0);
@@ -36,7 +40,7 @@ Dropped_components drop_smallest_while(SurfaceMesh& mesh, const KeepDropping& ke
                    [&](std::size_t a, std::size_t b) { return sizes[a] < sizes[b]; });
   Dropped_components dropped;
   std::vector<std::size_t> doomed;
-  std::size_t faces_left = mesh.number_of_faces();
+  std::size_t faces_left = face_count(mesh);
   // by_size.back() is the largest component: the mesh keeps it whatever is asked.
   for (std::size_t i = 0; i + 1 < by_size.size() && keep_dropping(sizes[by_size[i]], faces_left);
        ++i) {
@@ -47,7 +51,7 @@ Dropped_components drop_smallest_while(SurfaceMesh& mesh, const KeepDropping& ke
   if (doomed.empty()) return dropped;
   dropped.components = doomed.size();
   PMP::remove_connected_components(mesh, doomed, components);
-  mesh.collect_garbage();
+  if constexpr (Is_surface_mesh<FaceGraph>::value) mesh.collect_garbage();
   return dropped;
 }
 
@@ -55,8 +59,8 @@ Dropped_components drop_smallest_while(SurfaceMesh& mesh, const KeepDropping& ke
 
 // Removes every connected component of fewer than `min_faces` faces but the largest, so the mesh
 // never ends empty.
-template <typename SurfaceMesh>
-Dropped_components drop_components_smaller_than(SurfaceMesh& mesh, std::size_t min_faces) {
+template <typename FaceGraph>
+Dropped_components drop_components_smaller_than(FaceGraph& mesh, std::size_t min_faces) {
   if (min_faces <= 1) return {};  // every component has a face
   return internal::drop_smallest_while(
       mesh, [&](std::size_t faces, std::size_t) { return faces < min_faces; });
@@ -64,8 +68,8 @@ Dropped_components drop_components_smaller_than(SurfaceMesh& mesh, std::size_t m
 
 // Removes connected components whole, smallest first (the first found among equals), while the
 // mesh has more than `target_faces` faces; never the largest one.
-template <typename SurfaceMesh>
-Dropped_components drop_smallest_components_until(SurfaceMesh& mesh, std::size_t target_faces) {
+template <typename FaceGraph>
+Dropped_components drop_smallest_components_until(FaceGraph& mesh, std::size_t target_faces) {
   return internal::drop_smallest_while(
       mesh, [&](std::size_t, std::size_t left) { return left > target_faces; });
 }

@@ -16,5 +16,6 @@ int main(int argc, char** argv) try {
   std::cout << report.input_faces << " -> " << report.output_faces << " faces, corner attributes "
             << (report.attributes_carried ? "carried" : "none") << '\n';
 } catch (const cgal_policies::io::Io_error& e) {
-  return std::cerr << e.what() << '\n', e.kind() == e.Kind::unreadable_input ? 3 : 4;
+  using Kind = cgal_policies::io::Io_error::Kind;
+  return std::cerr << e.what() << '\n', e.kind() == Kind::unreadable_input ? 3 : 4;
 }

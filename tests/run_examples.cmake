@@ -1,7 +1,7 @@
 # Installs the package into a scratch prefix, builds examples/ against it as a project of its own,
 # and runs each program on a shipped mesh, checking what it promises with the suite's mesh_error.
 # Expects BINARY_DIR (the project's build), SOURCE_DIR (examples/), DATA_DIR, BIN_DIR (where
-# mesh_error is) and WORK_DIR.
+# mesh_error is), WORK_DIR, CXX_COMPILER (the build's) and CXX_FLAGS (the sanitizers', or empty).
 cmake_minimum_required(VERSION 3.19)  # string(JSON)
 file(REMOVE_RECURSE "${WORK_DIR}")
 file(MAKE_DIRECTORY "${WORK_DIR}/out")
@@ -24,7 +24,8 @@ endfunction()
 
 run_step("${CMAKE_COMMAND}" --install "${BINARY_DIR}" --prefix "${WORK_DIR}/prefix")
 run_step("${CMAKE_COMMAND}" -S "${SOURCE_DIR}" -B "${WORK_DIR}/build" -DCMAKE_BUILD_TYPE=Release
-         "-DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix")
+         "-DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix" "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}"
+         "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}" "-DCMAKE_EXE_LINKER_FLAGS=${CXX_FLAGS}")
 run_step("${CMAKE_COMMAND}" --build "${WORK_DIR}/build" --parallel 2)
 
 set(cow "${DATA_DIR}/cow.obj")

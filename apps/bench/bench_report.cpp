@@ -3,6 +3,8 @@
 #include "Bench_row.h"
 #include "cli/Json_object.h"
 
+#include <CGAL/version.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -307,7 +309,10 @@ std::string runs_json(const std::vector<Run_record>& records, const std::string&
 
 std::string markdown_report(const std::vector<Run_record>& records, const std::string& command,
                             const Bench_plan& plan) {
-  std::string md = "# simplify_bench\n\n`" + command + "`\n\n";
+  std::string md = "# simplify_bench\n\n`" + command + "`\n\nBuilt with CGAL " +
+                   std::string(CGAL_VERSION_STR) +
+                   ": gh, gh-prob and lt are its policies, and every row of this suite but fast "
+                   "and flat-lt runs in its edge collapse.\n\n";
   md += "Seconds: the simplification alone, the fastest of " + std::to_string(plan.repetitions) +
         " repetition(s); × gh: that time over gh's on the same mesh and target. Errors: "
         "two-sided, " +

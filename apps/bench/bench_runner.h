@@ -10,6 +10,8 @@
 #include "evaluation/mesh_validity.h"
 #include "evaluation/surface_error.h"
 
+#include <CGAL/version.h>
+
 #include <cstddef>
 #include <functional>
 #include <map>
@@ -49,6 +51,9 @@ struct Run_record {
   double target_ratio = 0;  // 0 when the target is a face count
   std::size_t target_faces = 0;
   std::string policy;
+  // The CGAL the bench was built with: gh, gh-prob and lt are its policies, and every pipeline
+  // row but fast and flat-lt runs in its edge collapse.
+  std::string cgal = CGAL_VERSION_STR;
   std::size_t threads = 0;  // Bench_settings::threads: 0 is a row's default
   std::string input_read;   // "whole", or "out of core" (Bench_mesh::out_of_core)
   std::size_t repetitions = 0;
@@ -90,6 +95,7 @@ void for_each_field(const Run_record& r, Visitor&& visit) {
   visit("target_ratio", r.target_ratio);
   visit("target_faces", r.target_faces);
   visit("policy", r.policy);
+  visit("cgal", r.cgal);
   visit("threads", r.threads);
   visit("input_read", r.input_read);
   visit("repetitions", r.repetitions);

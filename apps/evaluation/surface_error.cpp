@@ -51,8 +51,8 @@ struct Distance_kernel : Kernel {
   };
   Construct_projected_point_3 construct_projected_point_3_object() const { return {}; }
 };
-using Distance_tree = CGAL::AABB_tree<
-    CGAL::AABB_traits<Distance_kernel, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
+using Distance_tree = CGAL::AABB_tree<cgal_policies::internal::Aabb_traits<
+    Distance_kernel, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
 
 // Squared distances from points to the surface in the tree, computed on every core.
 std::vector<double> squared_distances(const std::vector<Point>& points, const Distance_tree& tree) {

@@ -5,8 +5,9 @@
 
 #include "app_types.h"
 
+#include <cgal_policies/internal/cgal_version.h>
+
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 
 #include <array>
@@ -32,8 +33,8 @@ struct Mesh_error {
 };
 
 // An AABB tree over a mesh's faces, for distance and closest-face queries.
-using Face_tree =
-    CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
+using Face_tree = CGAL::AABB_tree<
+    cgal_policies::internal::Aabb_traits<Kernel, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
 
 double bbox_diagonal(const Mesh& mesh);
 

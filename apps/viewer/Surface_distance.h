@@ -4,8 +4,9 @@
 
 #include "Collapse_replay.h"
 
+#include <cgal_policies/internal/cgal_version.h>
+
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 
 #include <vector>
@@ -26,8 +27,8 @@ class Surface_distance {
   std::vector<double> vertex_distances(const Indexed_mesh& mesh, std::vector<double>& cache) const;
 
  private:
-  using Tree =
-      CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
+  using Tree = CGAL::AABB_tree<
+      cgal_policies::internal::Aabb_traits<Kernel, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
   Mesh m_surface;
   Tree m_tree;
 };

@@ -5,10 +5,9 @@
 #define CGAL_POLICIES_INTERNAL_BORDER_CURVE_H
 
 #include <cgal_policies/internal/Input_triangles.h>
+#include <cgal_policies/internal/cgal_version.h>
 #include <cgal_policies/internal/mesh_geometry.h>
 
-#include <CGAL/AABB_segment_primitive.h>
-#include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -26,8 +25,8 @@ namespace internal {
 class Border_curve {
   using Search_kernel = CGAL::Simple_cartesian<double>;
   using Segments = std::vector<Search_kernel::Segment_3>;
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<
-      Search_kernel, CGAL::AABB_segment_primitive<Search_kernel, Segments::const_iterator>>>;
+  using Tree = CGAL::AABB_tree<
+      Aabb_traits<Search_kernel, Aabb_segment_primitive<Search_kernel, Segments::const_iterator>>>;
 
  public:
   template <typename TriangleMesh, typename VertexPointMap>

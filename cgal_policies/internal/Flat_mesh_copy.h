@@ -7,6 +7,7 @@
 
 #include <cgal_policies/Corner_attributes.h>
 #include <cgal_policies/internal/Flat_collapse_mesh.h>
+#include <cgal_policies/internal/Is_surface_mesh.h>
 #include <cgal_policies/internal/mesh_geometry.h>
 #include <cgal_policies/internal/part_vertex_maps.h>
 
@@ -42,10 +43,16 @@ struct Corner_attribute_values {
   }
 };
 
-template <class Mesh>
-struct Is_surface_mesh : std::false_type {};
-template <class Point>
-struct Is_surface_mesh<CGAL::Surface_mesh<Point>> : std::true_type {};
+// vertices(g) and faces(g) as argument-dependent lookup finds them for every face graph (OpenMesh's
+// are in its own namespace): Flat_mesh_copy's members hide the names.
+template <class Graph>
+auto vertex_range(const Graph& g) {
+  return vertices(g);
+}
+template <class Graph>
+auto face_range(const Graph& g) {
+  return faces(g);
+}
 
 // Corners: No_corner_values, or Corner_attribute_values for a CGAL::Surface_mesh that has them.
 template <class TriangleMesh, class Corners>
@@ -75,15 +82,15 @@ class Flat_mesh_copy {
     // A dynamic map, gone when the constructor returns: write_back() clears tm.
     auto index = get(CGAL::dynamic_vertex_property_t<int>(), tm);
     Eigen::AlignedBox3d box;
-    for (Vertex_descriptor v : CGAL::vertices(tm)) {
+    for (Vertex_descriptor v : vertex_range(tm)) {
       put(index, v, int(points.size()));
       vertices.push_back(v);
       points.push_back(to_eigen(get(vpm, v)));
       box.extend(points.back());
-      border.push_back(bool(is_border(v, tm)));
+      border.push_back(bool(CGAL::is_border(v, tm)));
     }
     if (locked.empty()) locked.assign(points.size(), false);
-    for (auto f : CGAL::faces(tm)) {
+    for (auto f : face_range(tm)) {
       const auto h = halfedge(f, tm);
       triangles.push_back({get(index, source(h, tm)), get(index, target(h, tm)),
                            get(index, target(next(h, tm), tm))});

@@ -28,7 +28,8 @@ class Hausdorff_attachment {
   using vertex_descriptor = typename Graph_traits::vertex_descriptor;
   using face_descriptor = typename Graph_traits::face_descriptor;
   using Piece_list_property = CGAL::dynamic_face_property_t<std::vector<std::uint32_t>>;
-  using Frozen_property = CGAL::dynamic_face_property_t<bool>;
+  // Not bool: a bool map of OpenMesh's is a std::vector<bool>, which CGAL's map cannot refer into.
+  using Frozen_property = CGAL::dynamic_face_property_t<std::uint8_t>;
   using Sample_property = CGAL::dynamic_vertex_property_t<Reference_sample>;
 
  public:
@@ -39,7 +40,7 @@ class Hausdorff_attachment {
 
   const Triangle_corners& piece(std::uint32_t i) const { return m_pieces[i]; }
   decltype(auto) pieces_of(face_descriptor f) const { return get(m_face_pieces, f); }
-  bool frozen(face_descriptor f) const { return get(m_frozen, f); }
+  bool frozen(face_descriptor f) const { return get(m_frozen, f) != 0; }
   Reference_sample sample(vertex_descriptor v) const { return get(m_samples, v); }
   void set_sample(vertex_descriptor v, const Reference_sample& s) { put(m_samples, v, s); }
 

@@ -10,8 +10,8 @@
 #include <cgal_policies/internal/Hausdorff_input_surface.h>
 #include <cgal_policies/internal/Hausdorff_patch.h>
 #include <cgal_policies/internal/Hausdorff_pending_choice.h>
-#include <cgal_policies/internal/Optional.h>
 #include <cgal_policies/internal/Storage_scan_order.h>
+#include <cgal_policies/internal/cgal_version.h>
 #include <cgal_policies/internal/mesh_geometry.h>
 
 #include <CGAL/assertions.h>

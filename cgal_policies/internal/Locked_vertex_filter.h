@@ -4,7 +4,7 @@
 #ifndef CGAL_POLICIES_INTERNAL_LOCKED_VERTEX_FILTER_H
 #define CGAL_POLICIES_INTERNAL_LOCKED_VERTEX_FILTER_H
 
-#include <cgal_policies/internal/Optional.h>
+#include <cgal_policies/internal/cgal_version.h>
 #include <cgal_policies/internal/part_vertex_maps.h>
 
 #include <CGAL/Surface_mesh.h>

@@ -8,8 +8,8 @@
 #define CGAL_POLICIES_INTERNAL_QUADRIC_POLICY_BASE_H
 
 #include <cgal_policies/Quadric_options.h>
-#include <cgal_policies/internal/Optional.h>
 #include <cgal_policies/internal/Quadric.h>
+#include <cgal_policies/internal/cgal_version.h>
 #include <cgal_policies/internal/plane_quadrics.h>
 #include <cgal_policies/internal/quadric_placement.h>
 

@@ -3,7 +3,7 @@
 #ifndef CGAL_POLICIES_INTERNAL_STORAGE_SCAN_ORDER_H
 #define CGAL_POLICIES_INTERNAL_STORAGE_SCAN_ORDER_H
 
-#include <cgal_policies/internal/Optional.h>
+#include <cgal_policies/internal/cgal_version.h>
 
 #include <CGAL/boost/graph/properties.h>
 

@@ -5,7 +5,7 @@
 #ifndef CGAL_POLICIES_INTERNAL_ZERO_QUADRIC_TOLERANT_POLICIES_H
 #define CGAL_POLICIES_INTERNAL_ZERO_QUADRIC_TOLERANT_POLICIES_H
 
-#include <boost/optional.hpp>
+#include <cgal_policies/internal/cgal_version.h>
 
 namespace cgal_policies {
 namespace internal {
@@ -19,15 +19,15 @@ class Zero_quadric_tolerant_policies : public Policies {
   const Zero_quadric_tolerant_policies& get_placement() const { return *this; }
 
   template <typename Profile>
-  boost::optional<typename Profile::FT> operator()(
-      const Profile& profile, const boost::optional<typename Profile::Point>& placement) const {
+  Optional<typename Profile::FT> operator()(
+      const Profile& profile, const Optional<typename Profile::Point>& placement) const {
     if (!placement || !has_zero_quadric(profile)) return Policies::operator()(profile, placement);
     const auto p = Policies::point_to_homogenous_column(*placement);
     return typename Profile::FT((p.transpose() * combined(profile) * p)(0, 0));
   }
 
   template <typename Profile>
-  boost::optional<typename Profile::Point> operator()(const Profile& profile) const {
+  Optional<typename Profile::Point> operator()(const Profile& profile) const {
     if (!has_zero_quadric(profile)) return Policies::operator()(profile);
     const auto optimum = Policies::construct_optimum(
         combined(profile), Policies::point_to_homogenous_column(profile.p0()),

@@ -5,6 +5,7 @@
 
 #include <cgal_policies/internal/mesh_geometry.h>
 
+#include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
@@ -24,7 +25,7 @@ double side_ratio(typename boost::graph_traits<TriangleMesh>::halfedge_descripto
   };
   double others = 0;
   for (auto g : {h, opposite(h, tm)})
-    if (!is_border(g, tm)) others += length(next(g, tm)) + length(prev(g, tm));
+    if (!CGAL::is_border(g, tm)) others += length(next(g, tm)) + length(prev(g, tm));
   return others > 0 ? length(h) / others : 0.0;
 }
 

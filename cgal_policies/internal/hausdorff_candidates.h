@@ -4,7 +4,7 @@
 #define CGAL_POLICIES_INTERNAL_HAUSDORFF_CANDIDATES_H
 
 #include <cgal_policies/Hausdorff_bounded_options.h>
-#include <cgal_policies/internal/Optional.h>
+#include <cgal_policies/internal/cgal_version.h>
 #include <cgal_policies/internal/mesh_geometry.h>
 
 #include <CGAL/boost/graph/helpers.h>

@@ -3,6 +3,8 @@
 #ifndef CGAL_POLICIES_INTERNAL_PART_VERTEX_MAPS_H
 #define CGAL_POLICIES_INTERNAL_PART_VERTEX_MAPS_H
 
+#include <cgal_policies/internal/cgal_version.h>
+
 #include <CGAL/Surface_mesh.h>
 
 #include <optional>
@@ -21,9 +23,7 @@ inline const std::string kOriginVertexMap = "v:cgal_policies_origin";
 template <class T, class Point>
 std::optional<typename CGAL::Surface_mesh<Point>::template Property_map<CGAL::SM_Vertex_index, T>>
 find_vertex_map(const CGAL::Surface_mesh<Point>& mesh, const std::string& name) {
-  const auto found = mesh.template property_map<CGAL::SM_Vertex_index, T>(name);
-  if (!found.second) return std::nullopt;
-  return found.first;
+  return find_property_map<CGAL::SM_Vertex_index, T>(mesh, name);
 }
 
 // Adds both maps to `part`: each vertex v stands for origin_of(v), locked when locked(v).

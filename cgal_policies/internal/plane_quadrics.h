@@ -6,6 +6,7 @@
 #include <cgal_policies/internal/Quadric.h>
 #include <cgal_policies/internal/mesh_geometry.h>
 
+#include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
 namespace cgal_policies {
@@ -66,7 +67,7 @@ void accumulate_vertex_quadrics(const TriangleMesh& tm, const VertexPointMap& vp
     const Quadric face_quadric = face_plane_quadric(f, tm, vpm, weighting);
     for (auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
       put(face_map, target(h, tm), get(face_map, target(h, tm)) + face_quadric);
-      if (!is_border(opposite(h, tm), tm)) continue;
+      if (!CGAL::is_border(opposite(h, tm), tm)) continue;
       const Quadric border_quadric = border_plane_quadric(h, tm, vpm, border_weight, weighting);
       put(border_map, source(h, tm), get(border_map, source(h, tm)) + border_quadric);
       put(border_map, target(h, tm), get(border_map, target(h, tm)) + border_quadric);

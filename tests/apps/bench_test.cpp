@@ -137,8 +137,8 @@ int BenchQuickPreset::s_exit = -1;
 std::vector<Row> BenchQuickPreset::s_rows;
 
 TEST_F(BenchQuickPreset, CsvHasOneRowPerCaseAndPolicyWithFiniteNumbers) {
-  const std::set<std::string> text_columns = {"mesh",       "target",      "label", "policy",
-                                              "input_read", "stop_reason", "valid", "closed"};
+  const std::set<std::string> text_columns = {
+      "mesh", "target", "label", "policy", "input_read", "stop_reason", "valid", "closed", "cgal"};
   // Without --attributes, the corner-attribute columns stay empty (BenchAttributes fills them).
   const std::set<std::string> attribute_columns = {
       "attributes",           "uv_mean_rel",  "uv_max_rel",   "normal_angle_mean_deg",
@@ -152,6 +152,7 @@ TEST_F(BenchQuickPreset, CsvHasOneRowPerCaseAndPolicyWithFiniteNumbers) {
     EXPECT_EQ(row.at("threads"), "0");
     EXPECT_EQ(row.at("scaling"), "");
     EXPECT_EQ(row.at("input_read"), "whole");
+    EXPECT_EQ(row.at("cgal"), CGAL_VERSION_STR);
     for (const auto& [column, cell] : row) {
       if (attribute_columns.count(column) || column == "scaling") {
         EXPECT_EQ(cell, "") << column;

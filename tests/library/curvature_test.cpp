@@ -5,9 +5,9 @@
 #include <cgal_policies/Classic_quadric_policies.h>
 #include <cgal_policies/Curvature_weighted_quadric_policies.h>
 #include <cgal_policies/internal/approximate_curvature.h>
+#include <cgal_policies/internal/cgal_version.h>
 
 #include <CGAL/Surface_mesh_simplification/Edge_collapse_visitor_base.h>
-#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Count_stop_predicate.h>
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 
 #include <gtest/gtest.h>
@@ -170,10 +170,11 @@ TEST(CurvatureWeightedQuadricPolicies, ACollapseRefreshesTheCurvatureAroundTheKe
   const Policies policies(mesh);
   Mesh::Vertex_index kept;
   // Stops after one collapse, which removes three edges.
-  SMS::edge_collapse(mesh, SMS::Count_stop_predicate<Mesh>(mesh.number_of_edges() - 2),
-                     CGAL::parameters::get_cost(policies.get_cost())
-                         .get_placement(policies.get_placement())
-                         .visitor(Kept_vertex_visitor(&kept)));
+  SMS::edge_collapse(
+      mesh, cgal_policies::internal::Edge_count_stop_predicate<Mesh>(mesh.number_of_edges() - 2),
+      CGAL::parameters::get_cost(policies.get_cost())
+          .get_placement(policies.get_placement())
+          .visitor(Kept_vertex_visitor(&kept)));
   ASSERT_EQ(mesh.number_of_faces(), 18u);
 
   auto normals = mesh.add_property_map<Mesh::Vertex_index, cgal_policies::internal::Stored_normal>(

@@ -4,12 +4,12 @@
 
 #include <cgal_policies/Bounded_normal_angle_filter.h>
 #include <cgal_policies/Feature_fusion_policies.h>
+#include <cgal_policies/internal/cgal_version.h>
 #include <cgal_policies/internal/feature_fusion_measures.h>
 
 #include <CGAL/Aff_transformation_3.h>
 #include <CGAL/Polygon_mesh_processing/transform.h>
 #include <CGAL/Surface_mesh_simplification/Edge_collapse_visitor_base.h>
-#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Count_stop_predicate.h>
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 
 #include <gtest/gtest.h>
@@ -201,7 +201,7 @@ class Collapse_recorder : public SMS::Edge_collapse_visitor_base<Mesh> {
 std::vector<std::pair<int, int>> simplify(Mesh& mesh, std::size_t edges_left,
                                           const Policies& policies) {
   std::vector<std::pair<int, int>> collapses;
-  SMS::edge_collapse(mesh, SMS::Count_stop_predicate<Mesh>(edges_left),
+  SMS::edge_collapse(mesh, cgal_policies::internal::Edge_count_stop_predicate<Mesh>(edges_left),
                      CGAL::parameters::get_cost(policies.get_cost())
                          .get_placement(policies.get_placement())
                          .filter(cgal_policies::Bounded_normal_angle_filter<>())

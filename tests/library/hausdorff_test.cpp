@@ -18,12 +18,12 @@
 
 #include <cgal_policies/Hausdorff_bounded_filter.h>
 #include <cgal_policies/Hausdorff_bounded_policies.h>
+#include <cgal_policies/internal/cgal_version.h>
 #include <cgal_policies/internal/piece_cover.h>
 #include <cgal_policies/internal/triangle_distance.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh_simplification/Edge_collapse_visitor_base.h>
-#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Count_stop_predicate.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Edge_length_cost.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Midpoint_placement.h>
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
@@ -279,7 +279,7 @@ Log record_a_run(Mesh& mesh) {
   const Policies policies(mesh, options);
   Log log;
   SMS::edge_collapse(
-      mesh, SMS::Count_stop_predicate<Mesh>(60),
+      mesh, cgal_policies::internal::Edge_count_stop_predicate<Mesh>(60),
       CGAL::parameters::get_cost(Recording_cost<Policies::Get_cost>{policies.get_cost(), &log})
           .get_placement(
               Recording_placement<Policies::Get_placement>{policies.get_placement(), &log})
@@ -449,7 +449,7 @@ TEST(HausdorffBoundedPolicies, GlobalModeKeepsTheTwoSidedBoundOnRealMeshes) {
 // Edge length and midpoints as far as they go, bounded or not.
 template <typename Filter>
 void collapse_shortest_edges(Mesh& mesh, const Filter& filter) {
-  SMS::edge_collapse(mesh, SMS::Count_stop_predicate<Mesh>(1),
+  SMS::edge_collapse(mesh, cgal_policies::internal::Edge_count_stop_predicate<Mesh>(1),
                      CGAL::parameters::get_cost(SMS::Edge_length_cost<Mesh>())
                          .get_placement(SMS::Midpoint_placement<Mesh>())
                          .filter(filter));

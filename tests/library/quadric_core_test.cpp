@@ -5,10 +5,10 @@
 #include <cgal_policies/Bounded_normal_angle_filter.h>
 #include <cgal_policies/Classic_quadric_policies.h>
 #include <cgal_policies/internal/Attribute_quadric.h>
+#include <cgal_policies/internal/cgal_version.h>
 #include <cgal_policies/internal/plane_quadrics.h>
 #include <cgal_policies/internal/quadric_placement.h>
 
-#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Count_stop_predicate.h>
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 
 #include <gtest/gtest.h>
@@ -237,7 +237,7 @@ TEST(BorderPlanes, ASimplifiedGridKeepsItsOutline) {
   Mesh mesh = flat_grid(8);
   const cgal_policies::Classic_quadric_policies<Mesh, Kernel> policies(mesh);
   CGAL::Surface_mesh_simplification::edge_collapse(
-      mesh, CGAL::Surface_mesh_simplification::Count_stop_predicate<Mesh>(20),
+      mesh, cgal_policies::internal::Edge_count_stop_predicate<Mesh>(20),
       CGAL::parameters::get_cost(policies.get_cost()).get_placement(policies.get_placement()));
   mesh.collect_garbage();
   ASSERT_LT(mesh.number_of_faces(), 128u);
