@@ -35,18 +35,20 @@ int run(int argc, char** argv) {
                  "blue alpha; OBJ: v x y z r g b) with the colours alone.\n"
                  "  --texture IMAGE  the texture (default: the diffuse map, map_Kd, of IN's\n"
                  "                   material)\n"
-                 "  --force          overwrite OUT if it exists\n";
+                 "  --force          overwrite OUT if it exists\n"
+              << kAssetRootHelp;
     return exit_success;
   }
   const bool force = cli.take_flag("force");
   const std::optional<std::string> texture_option = cli.take_value("texture");
+  const std::string asset_root = take_asset_root(cli);
   const std::vector<std::string> args = cli.positionals();
   if (args.size() != 2) throw App_error(exit_usage, kUsage);
   const std::string &input = args[0], &output = args[1];
   check_output_path(input, output, force);
 
   Read_report report;
-  Mesh mesh = read_triangle_mesh(input, &report, Corner_attribute_reading::keep);
+  Mesh mesh = read_triangle_mesh(input, {Corner_attribute_reading::keep, 1, asset_root}, &report);
   const Attributes textured(mesh);
   if (!textured.uvs)
     throw Io_error(Io_error::Kind::unreadable_input, input + ": no texture coordinates");

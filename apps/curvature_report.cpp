@@ -36,7 +36,7 @@ namespace {
 constexpr std::size_t kDefaultSamples = 100000;
 constexpr double kCurvedShare = 0.25;  // of the input's area
 
-const char* const kUsage = "usage: curvature_report INPUT A B [--samples N]";
+const char* const kUsage = "usage: curvature_report INPUT A B [--samples N] [--asset-root DIR]";
 
 // True for the faces of `input` in its most curved quarter by area.
 std::vector<bool> curved_quarter(Mesh& input) {
@@ -124,10 +124,12 @@ int run(int argc, char** argv) {
     return exit_success;
   }
   const double samples = cli.take_number("samples").value_or(double(kDefaultSamples));
+  const std::string asset_root = take_asset_root(cli);
   const std::vector<std::string> args = cli.positionals();
   if (args.size() != 3 || !(samples >= 1)) throw App_error(exit_usage, kUsage);
 
-  Mesh input = read_triangle_mesh(args[0]);
+  const Read_options reading{Corner_attribute_reading::drop, 1, asset_root};
+  Mesh input = read_triangle_mesh(args[0], reading);
   const std::vector<bool> curved = curved_quarter(input);
   Face_tree input_tree(faces(input).first, faces(input).second, input);
   input_tree.accelerate_distance_queries();
@@ -139,8 +141,10 @@ int run(int argc, char** argv) {
   json.add("samples", points.size());
   json.add("a", args[1]);
   json.add("b", args[2]);
-  report_simplification("a_", input, input_tree, curved, points, read_triangle_mesh(args[1]), json);
-  report_simplification("b_", input, input_tree, curved, points, read_triangle_mesh(args[2]), json);
+  report_simplification("a_", input, input_tree, curved, points,
+                        read_triangle_mesh(args[1], reading), json);
+  report_simplification("b_", input, input_tree, curved, points,
+                        read_triangle_mesh(args[2], reading), json);
   std::cout << json.str() << '\n';
   return exit_success;
 }

@@ -20,7 +20,7 @@ namespace apps {
 namespace {
 
 void print_help() {
-  std::cout << "usage: mesh_error A B [--samples N] [--attributes] [--json]\n"
+  std::cout << "usage: mesh_error A B [--samples N] [--attributes] [--asset-root DIR] [--json]\n"
                "Two-sided distances between the surfaces of A (the reference) and B: the\n"
                "Hausdorff distance, the mean distance in each direction and the RMS, absolute\n"
                "and relative to A's bounding-box diagonal; then the validity of B.\n\n"
@@ -33,6 +33,8 @@ void print_help() {
                "                triangles;\n"
                "                each figure only when both files have what it compares\n"
                "                (docs/evaluation.md)\n"
+               "  --asset-root DIR  let A and B name files anywhere in DIR, a folder\n"
+               "                holding both; without it, each only in its own folder and below\n"
                "  --json        print one JSON object on stdout\n";
 }
 
@@ -67,16 +69,19 @@ int run(int argc, char** argv) {
   const double samples = cli.take_number("samples").value_or(double(kDefaultErrorSamples));
   const bool json = cli.take_flag("json");
   const bool attributes = cli.take_flag("attributes");
+  const std::string asset_root = take_asset_root(cli);
   const std::vector<std::string> args = cli.positionals();
   if (args.size() != 2)
-    throw App_error(exit_usage, "usage: mesh_error A B [--samples N] [--attributes] [--json]");
+    throw App_error(
+        exit_usage,
+        "usage: mesh_error A B [--samples N] [--attributes] [--asset-root DIR] [--json]");
   if (!(samples >= 1 && samples == std::floor(samples)))
     throw App_error(exit_usage, "--samples must be a whole number of at least 1");
 
   const Corner_attribute_reading reading =
       attributes ? Corner_attribute_reading::keep : Corner_attribute_reading::drop;
-  const Mesh a = read_triangle_mesh(args[0], nullptr, reading);
-  const Mesh b = read_triangle_mesh(args[1], nullptr, reading);
+  const Mesh a = read_triangle_mesh(args[0], {reading, 1, asset_root});
+  const Mesh b = read_triangle_mesh(args[1], {reading, 1, asset_root});
   const Mesh_error error = measure_mesh_error(a, b, std::size_t(samples));
   const Mesh_validity validity = check_mesh_validity(b);
   const Attribute_error attribute_error =

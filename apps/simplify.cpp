@@ -109,7 +109,8 @@ void print_help() {
       << (snapshots_in_this_build() ? "" : " (not in this build)")
       << "\n"
          "  --size WxH            the snapshot's size in pixels (default 1600x800)\n"
-         "  --force               allow OUT to be the same file as IN\n"
+      << kAssetRootHelp
+      << "  --force               allow OUT to be the same file as IN\n"
          "  --quiet               no progress bar, no summary\n"
          "  --help                this text\n\n"
          "Policy options (all lengths are fractions of IN's bounding-box diagonal):\n";
@@ -297,14 +298,17 @@ int run(int argc, char** argv) {
       return run_out_of_core(pipeline, source, input, mesh);
     });
     input_had_corner_values = source.has_corner_values();
-    read_report.materials = source.materials();
+    read_report.materials = source.materials(request.asset_root, read_report.left_out);
+    for (const std::string& loss : read_report.left_out)
+      std::cerr << "simplify: warning: " << loss << '\n';
   } else {
     const Stopwatch reading;
     // Only an OBJ, PLY or glTF output can hold texture coordinates, normals and colours.
-    mesh = read_triangle_mesh(input, &read_report,
-                              writes_corner_attributes(output) ? Corner_attribute_reading::keep
-                                                               : Corner_attribute_reading::drop,
-                              options.threads);
+    const Corner_attribute_reading reading_attributes = writes_corner_attributes(output)
+                                                            ? Corner_attribute_reading::keep
+                                                            : Corner_attribute_reading::drop;
+    mesh = read_triangle_mesh(input, {reading_attributes, options.threads, request.asset_root},
+                              &read_report);
     read_seconds = reading.seconds();
     if (!quiet)
       for (const std::string& repair : read_report.repairs)

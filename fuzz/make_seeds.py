@@ -218,6 +218,23 @@ def skinned_gltf(path):
     return json.dumps(g, separators=(",", ":")).encode()
 
 
+def naming_outside(path, what):
+    """The glTF at `path` (its buffer a data URI) naming a file outside its folder: with `what`
+    "buffer", a second buffer (the reader refuses the file); with "image", the base colour image
+    of a material of its own (the reader leaves it out)."""
+    with open(path) as f:
+        gltf = json.load(f)
+    if what == "buffer":
+        gltf["buffers"].append({"uri": "../../../../../../etc/passwd", "byteLength": 12})
+    else:
+        gltf["images"] = [{"uri": "%2e%2e/%2e%2e/textures/skin.png"}]
+        gltf["textures"] = [{"source": 0}]
+        gltf["materials"] = [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}]
+        for primitive in gltf["meshes"][0]["primitives"]:
+            primitive["material"] = 0
+    return json.dumps(gltf, separators=(",", ":")).encode()
+
+
 def main():
     for mesh in MESHES:
         points, faces = read_obj(os.path.join(ROOT, "data", mesh))
@@ -248,10 +265,17 @@ def main():
             "in.obj out.obj 0.1 --policy gh --fit --fit-rounds 3 --max-normal-angle 45",
             "in.obj out.obj 0.1 --min-component 10 --drop-small-pieces --time-limit 5",
             "in.obj out.obj --faces=100 --merge-distance=0.001 --smooth-weights inverse-distance "
-            "--smooth-method taubin"]):
+            "--smooth-method taubin",
+            "in.gltf out.glb 0.1 --asset-root . --gltf-encoding meshopt"]):
         write("command_line", "line%d" % i, line.replace(" ", "\0").encode())
     write("read_gltf", "bob_40_faces_skins.gltf",
           skinned_gltf(os.path.join(CORPUS, "read_gltf", "bob_40_faces.gltf")))
+    woody = os.path.join(CORPUS, "read_gltf", "woody_20_faces.gltf")
+    write("read_gltf", "woody_20_faces_buffer_outside.gltf", naming_outside(woody, "buffer"))
+    write("read_gltf", "woody_20_faces_image_outside.gltf", naming_outside(woody, "image"))
+    with open(os.path.join(CORPUS, "read_obj", "woody_12_uv.obj"), "rb") as f:
+        write("read_obj", "woody_12_uv_libraries_outside.obj",
+              b"mtllib ../../../../etc/passwd ..\\outside.mtl /etc/hostname\nusemtl a\n" + f.read())
 
 
 if __name__ == "__main__":

@@ -93,10 +93,21 @@ py::dict policies() {
   return all;
 }
 
-Python_mesh read(const std::filesystem::path& path) {
-  py::gil_scoped_release released;
+// What the mesh is read without (an image outside the asset folder, a morph target) is a
+// UserWarning, as simplify prints it on stderr.
+Python_mesh read(const std::filesystem::path& path,
+                 const std::optional<std::filesystem::path>& asset_root) {
   io::Read_report read;
-  io::Mesh mesh = io::read_triangle_mesh(path.string(), &read, io::Corner_attribute_reading::keep);
+  io::Mesh mesh;
+  {
+    py::gil_scoped_release released;
+    mesh = io::read_triangle_mesh(
+        path.string(),
+        {io::Corner_attribute_reading::keep, 1, asset_root ? asset_root->string() : std::string()},
+        &read);
+  }
+  for (const std::string& line : read.left_out)
+    if (PyErr_WarnEx(PyExc_UserWarning, line.c_str(), 1) != 0) throw py::error_already_set();
   return Python_mesh(std::move(mesh), std::move(read));
 }
 
@@ -294,10 +305,15 @@ Dask cluster.
            "(mesh, report) as simplify(mesh) gives them; `mesh` the one given to cut(), None "
            "after cut_file().");
 
-  m.def("read", &python::read, py::arg("path"), R"doc(
+  m.def("read", &python::read, py::arg("path"), py::kw_only(), py::arg("asset_root") = py::none(),
+        R"doc(
 Reads a triangle mesh (.obj .off .ply .stl .gltf .glb) with its texture coordinates, normals,
 colours and materials, polygons triangulated and soups repaired as the tools do (see
-Mesh.repairs). ValueError with the reader's message when it cannot.
+Mesh.repairs). ValueError with the reader's message when it cannot. The files the mesh's file
+names (glTF buffers and images, OBJ material libraries and their textures) are read from its
+folder and the folders below only, or from anywhere in asset_root, a folder holding it, for
+trusted assets: a buffer from elsewhere is a ValueError, an image or a material library from
+elsewhere a UserWarning, the mesh read without it.
 )doc");
   m.def("write", &python::write, py::arg("mesh"), py::arg("path"), py::kw_only(),
         py::arg("gltf_encoding") = "float", R"doc(

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <sstream>
+#include <system_error>
 
 namespace apps {
 
@@ -73,6 +75,21 @@ double check_whole_number(double value, double min, double max, const std::strin
     throw App_error(exit_usage, range.str());
   }
   return value;
+}
+
+const char* const kAssetRootHelp =
+    "  --asset-root DIR      the input may name files (glTF buffers and images, OBJ\n"
+    "                        material libraries and textures) anywhere in DIR, a\n"
+    "                        folder holding it; without it, only in its own folder and\n"
+    "                        below\n";
+
+std::string take_asset_root(Command_line& cli) {
+  const std::optional<std::string> root = cli.take_value("asset-root");
+  if (!root) return {};
+  std::error_code failed;
+  if (!std::filesystem::is_directory(*root, failed))
+    throw App_error(exit_usage, "--asset-root: '" + *root + "' is not a folder");
+  return *root;
 }
 
 }  // namespace apps

@@ -30,6 +30,13 @@ class Command_line {
   std::vector<std::string> m_args;
 };
 
+// --asset-root DIR, which every tool that reads meshes takes: the folder the files an input names
+// may come from (mesh_io.h's Read_options); empty when not given. App_error(exit_usage) when DIR
+// is not a folder.
+std::string take_asset_root(Command_line& cli);
+// Its line of a tool's --help.
+extern const char* const kAssetRootHelp;
+
 // Parses a finite number; App_error(exit_usage) naming `what` otherwise.
 double parse_number(const std::string& text, const std::string& what);
 

@@ -81,6 +81,7 @@ Simplify_request take_simplify_request(Command_line& cli) {
   const std::optional<std::string> lod = cli.take_value("lod");
   if (lod) request.lod_ratios = parse_lod_ratios(*lod);
   const std::optional<Gltf_encoding> gltf_encoding = take_gltf_encoding(cli);
+  request.asset_root = take_asset_root(cli);
   const cgal_policies::Simplification_options& options = request.options;
   if (request.out_of_core && (!runs_out_of_core(options) || request.measure))
     throw App_error(exit_usage,

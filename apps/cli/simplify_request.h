@@ -40,6 +40,9 @@ struct Simplify_request {
   std::vector<double> lod_ratios;
   // --gltf-encoding: how a glTF OUT stores its vertices (gltf_io.h).
   Gltf_encoding gltf_encoding = Gltf_encoding::float32;
+  // --asset-root: the folder IN's buffers, images and material libraries may come from (mesh_io.h's
+  // Read_options); empty, IN's own folder.
+  std::string asset_root;
   std::string input, output;
 };
 

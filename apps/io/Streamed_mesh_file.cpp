@@ -1,6 +1,8 @@
 #include "Streamed_mesh_file.h"
 
+#include "Asset_folder.h"
 #include "Io_error.h"
+#include "material_texture.h"
 
 #include <algorithm>
 #include <charconv>
@@ -220,11 +222,12 @@ bool Streamed_mesh_file::has_corner_values() const {
   return m_kinds.uvs || m_kinds.normals || m_kinds.colors;
 }
 
-Material_references Streamed_mesh_file::materials() const {
+Material_references Streamed_mesh_file::materials(const std::string& asset_root,
+                                                  std::vector<std::string>& left_out) const {
+  const Asset_folder folder(m_path, asset_root);
   Material_references materials;
-  const std::filesystem::path folder = std::filesystem::absolute(m_path).parent_path();
-  for (const std::string& library : m_material_libraries)
-    materials.libraries.push_back((folder / library).lexically_normal().string());
+  materials.libraries = material_library_paths(m_path, m_material_libraries, folder, left_out);
+  materials.asset_root = folder.root().string();
   materials.names = m_material_names;
   return materials;
 }

@@ -44,12 +44,14 @@ class Streamed_mesh_file {
   void for_each_point(const std::function<void(double, double, double)>& f) const;
 
   // After for_each_point: the kinds of values the corners carry, and an OBJ's materials (its
-  // libraries resolved against its folder, the names its faces use).
+  // libraries resolved against its folder, those outside the asset folder left out with a line in
+  // `left_out`, as read_triangle_mesh does with `asset_root`; the names its faces use).
   Kinds corner_kinds() const;
   // Whether the corners carry values (texture coordinates, normals or colours; a material is the
   // triangle's), after for_each_point.
   bool has_corner_values() const;
-  Material_references materials() const;
+  Material_references materials(const std::string& asset_root,
+                                std::vector<std::string>& left_out) const;
 
   // Calls f(a, b, c, corners) for each triangle, after for_each_point. Throws Io_error on a corner
   // that names no vertex, or a texture coordinate or normal not read before it, and on a file that

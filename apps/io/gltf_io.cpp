@@ -1,9 +1,11 @@
 #include "gltf_io.h"
 
+#include "Asset_folder.h"
 #include "Io_error.h"
 #include "Wedge_mesh.h"
 #include "glb_chunks.h"
 #include "gltf_draco.h"
+#include "gltf_images.h"
 #include "gltf_meshopt.h"
 #include "obj_material_looks.h"
 
@@ -417,17 +419,6 @@ bool uses(const tinygltf::Model& model, const std::string& extension) {
          model.extensionsUsed.end();
 }
 
-// Calls visit(info) for each texture reference of `material` (a tinygltf::Material, const or not),
-// the base colour texture first.
-template <class Material, class Visit>
-void for_each_texture(Material& material, const Visit& visit) {
-  visit(material.pbrMetallicRoughness.baseColorTexture);
-  visit(material.pbrMetallicRoughness.metallicRoughnessTexture);
-  visit(material.normalTexture);
-  visit(material.occlusionTexture);
-  visit(material.emissiveTexture);
-}
-
 // The texture coordinate set a texture reference reads: its KHR_texture_transform may name one,
 // which overrides the reference's own.
 template <class Texture_info>
@@ -761,18 +752,31 @@ std::string uri_of_path(const fs::path& path) {
   return uri;
 }
 
-// What a written file keeps of the input: its looks, image files named by absolute path and
-// embedded images as bytes (the geometry's buffers are not needed any more).
-std::shared_ptr<tinygltf::Model> kept_looks(tinygltf::Model& model, const std::string& path) {
+// What a written file keeps of the input: its looks, image files named by their resolved paths
+// and embedded images as bytes (the geometry's buffers are not needed any more). An image file
+// that `folder` refuses is left out, with a line in `left_out`.
+std::shared_ptr<tinygltf::Model> kept_looks(tinygltf::Model& model, const std::string& path,
+                                            const Asset_folder& folder,
+                                            std::vector<std::string>& left_out) {
   auto looks = std::make_shared<tinygltf::Model>();
-  const fs::path folder = fs::absolute(path).parent_path();
-  for (tinygltf::Image& image : model.images) {
+  const fs::path gltf_folder = fs::absolute(path).parent_path();
+  std::vector<bool> refused(model.images.size(), false);
+  for (std::size_t i = 0; i < model.images.size(); ++i) {
+    tinygltf::Image& image = model.images[i];
     if (!image.uri.empty()) {
-      image.uri = (folder / uri_path(image.uri)).lexically_normal().string();
+      const Asset_folder::Resolved file = folder.resolve(gltf_folder, uri_path(image.uri));
+      if (!file.refusal.empty()) {
+        refused[i] = true;
+        left_out.push_back(path + ": image " + std::to_string(i) + "'s uri " +
+                           Asset_folder::quoted(image.uri) + " " + file.refusal +
+                           "; written without it");
+      }
+      image.uri = file.path.string();
       image.image.clear();  // the file stays where it is
     }
     image.bufferView = -1;
   }
+  remove_images(model, refused);
   // The texture transform is baked into the texture coordinates (read_uvs); the set it named, if
   // any, becomes the texture's.
   for (tinygltf::Material& material : model.materials)
@@ -792,10 +796,67 @@ std::shared_ptr<tinygltf::Model> kept_looks(tinygltf::Model& model, const std::s
   return looks;
 }
 
-// The file's model, its compressed views and primitives decoded; Io_error as read_gltf says.
-tinygltf::Model loaded_model(const std::string& path, bool binary) {
+// tinygltf's file system, confined to an asset folder: a file outside it neither exists nor is
+// read, and each reference refused is kept with its reason for the error message. tinygltf asks
+// for its base folder joined to the decoded URI, then for "./" joined to it, a guess in the
+// working folder, which is never the asset's: that one does not exist.
+struct Confined_files {
+  const Asset_folder* folder;
+  std::string base;                                          // the folder tinygltf is given
+  std::vector<std::pair<std::string, std::string>> refused;  // reference, refusal
+
+  // The file the path tinygltf joined names, or why not; none for its guess.
+  std::optional<Asset_folder::Resolved> resolved(const std::string& joined) const {
+    if (joined.compare(0, prefix().size(), prefix()) != 0) return std::nullopt;
+    return folder->resolve(base, reference(joined));
+  }
+  // As tinygltf joins (JoinPath).
+  std::string prefix() const { return !base.empty() && base.back() == '/' ? base : base + "/"; }
+  std::string reference(const std::string& joined) const { return joined.substr(prefix().size()); }
+
+  static bool exists(const std::string& path, void* files) {
+    auto& self = *static_cast<Confined_files*>(files);
+    const std::optional<Asset_folder::Resolved> file = self.resolved(path);
+    if (!file) return false;
+    if (!file->refusal.empty()) {
+      self.refused.emplace_back(self.reference(path), file->refusal);
+      return false;
+    }
+    std::error_code missing;
+    return fs::is_regular_file(file->path, missing);
+  }
+
+  static std::string as_is(const std::string& path, void*) { return path; }
+
+  static bool read(std::vector<unsigned char>* bytes, std::string* error, const std::string& path,
+                   void* files) {
+    const std::optional<Asset_folder::Resolved> file =
+        static_cast<Confined_files*>(files)->resolved(path);
+    std::ifstream in;
+    if (file && file->refusal.empty()) in.open(file->path, std::ios::binary);
+    if (!in) {
+      if (error) *error += "cannot be read";
+      return false;
+    }
+    bytes->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    return true;
+  }
+
+  static bool no_write(std::string* error, const std::string&, const std::vector<unsigned char>&,
+                       void*) {
+    if (error) *error += "the reader writes no file";
+    return false;
+  }
+};
+
+// The file's model, its compressed views and primitives decoded, its buffer files read from
+// `folder` alone; Io_error as read_gltf says.
+tinygltf::Model loaded_model(const std::string& path, bool binary, const Asset_folder& folder) {
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(keep_image_bytes, nullptr);
+  Confined_files files{&folder, fs::absolute(path).parent_path().string(), {}};
+  loader.SetFsCallbacks({&Confined_files::exists, &Confined_files::as_is, &Confined_files::read,
+                         &Confined_files::no_write, &files});
   tinygltf::Model model;
   std::string error, warning;
   bool loaded = false;
@@ -810,18 +871,23 @@ tinygltf::Model loaded_model(const std::string& path, bool binary) {
     if (binary) check_glb_chunks(path, bytes);
     if (bytes.size() > std::numeric_limits<unsigned>::max())
       fail(path, "cannot parse: larger than tinygltf reads (4 GiB)");
-    const std::string folder = fs::absolute(path).parent_path().string();
     loaded = binary
                  ? loader.LoadBinaryFromMemory(&model, &error, &warning,
                                                reinterpret_cast<const unsigned char*>(bytes.data()),
-                                               static_cast<unsigned>(bytes.size()), folder)
+                                               static_cast<unsigned>(bytes.size()), files.base)
                  : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(),
-                                              static_cast<unsigned>(bytes.size()), folder);
+                                              static_cast<unsigned>(bytes.size()), files.base);
   } catch (const Io_error&) {
     throw;
   } catch (const std::exception& e) {
     error = e.what();
   }
+  // A buffer refused (tinygltf's error names it; an image refused is one of its warnings, and
+  // kept_looks leaves it out): said so, naming the reference, never what the file it names holds.
+  for (const auto& [reference, refusal] : files.refused)
+    if (!loaded && error.find("File not found : " + reference + "\n") != std::string::npos)
+      fail(path, "a buffer's uri " + Asset_folder::quoted(reference) + " " + refusal + " (" +
+                     folder.root().string() + "); an asset root above it widens that");
   if (!loaded)
     fail(path,
          "cannot parse: " + (error.empty() && warning.empty() ? std::string("not a valid glTF file")
@@ -1217,8 +1283,10 @@ void keep_skeleton(const std::string& path, const tinygltf::Model& model, const 
 }
 
 // read_gltf_levels, or with `follow_lod` false the finest level alone, as read_gltf reads it.
-std::vector<Gltf_soup> read_levels(const std::string& path, bool binary, bool follow_lod) {
-  tinygltf::Model model = loaded_model(path, binary);
+std::vector<Gltf_soup> read_levels(const std::string& path, bool binary, bool follow_lod,
+                                   const std::string& asset_root) {
+  const Asset_folder folder(path, asset_root);
+  tinygltf::Model model = loaded_model(path, binary, folder);
   Lod_walk walk;
   walk.follow_lod = follow_lod;
   std::vector<std::vector<Placed_mesh>> placed;
@@ -1231,7 +1299,7 @@ std::vector<Gltf_soup> read_levels(const std::string& path, bool binary, bool fo
   for (const std::vector<Placed_mesh>& level : placed)
     levels.push_back({soup_of(path, model, level, skin), nullptr, {}});
   // Last: the soups above name the materials, which the looks take away.
-  std::shared_ptr<tinygltf::Model> looks = kept_looks(model, path);
+  std::shared_ptr<tinygltf::Model> looks = kept_looks(model, path, folder, left_out);
   if (skin)
     keep_skeleton(path, model, *skin, *looks, left_out);
   else if (!model.animations.empty())
@@ -1260,23 +1328,43 @@ int append_float_attribute(tinygltf::Model& model, std::vector<float> values, in
                          values.size() / components);
 }
 
-// The looks (a glTF input's, or an OBJ input's made glTF's), their image files named from
-// `output_folder` and their embedded images stored in buffer 0.
+// The looks (a glTF input's, or an OBJ input's made glTF's), their image files named from the
+// folder of the file written, `output`, when they lie in it, their other images stored in buffer 0:
+// the file names no file outside its folder. An image file that cannot be stored is left out,
+// with a line in `left_out`.
 void pass_looks_through(tinygltf::Model& model, const tinygltf::Model& looks,
-                        const fs::path& output_folder) {
+                        const Asset_folder& output, std::vector<std::string>& left_out) {
   model.materials = looks.materials;
   model.textures = looks.textures;
   model.samplers = looks.samplers;
   model.extensionsUsed = looks.extensionsUsed;
-  for (tinygltf::Image image : looks.images) {
-    if (!image.uri.empty()) {
-      image.uri = uri_of_path(fs::path(image.uri).lexically_relative(output_folder));
-    } else {
+  model.images = looks.images;
+  std::vector<bool> unreadable(model.images.size(), false);
+  for (std::size_t i = 0; i < model.images.size(); ++i) {
+    tinygltf::Image& image = model.images[i];
+    if (image.uri.empty()) continue;
+    if (const Asset_folder::Resolved inside = output.check(image.uri); inside.refusal.empty()) {
+      image.uri = uri_of_path(inside.path.lexically_relative(output.root()));
+      continue;
+    }
+    Image_file file = read_image_file(image.uri);
+    if (!file.failure.empty()) {
+      unreadable[i] = true;
+      left_out.push_back("image " + Asset_folder::quoted(image.uri) + " " + file.failure +
+                         "; written without it");
+      continue;
+    }
+    image.uri.clear();
+    image.image = std::move(file.bytes);
+    image.mimeType = file.mime_type;
+  }
+  remove_images(model, unreadable);
+  for (tinygltf::Image& image : model.images) {
+    if (image.uri.empty()) {
       image.bufferView = append_view(model, image.image.data(), image.image.size(), 0);
       image.image.clear();
     }
     image.as_is = false;
-    model.images.push_back(std::move(image));
   }
 }
 
@@ -1650,12 +1738,13 @@ void declare_extension(tinygltf::Model& model, const std::string& extension, boo
 
 }  // namespace
 
-Gltf_soup read_gltf(const std::string& path, bool binary) {
-  return std::move(read_levels(path, binary, false).front());
+Gltf_soup read_gltf(const std::string& path, bool binary, const std::string& asset_root) {
+  return std::move(read_levels(path, binary, false, asset_root).front());
 }
 
-std::vector<Gltf_soup> read_gltf_levels(const std::string& path, bool binary) {
-  return read_levels(path, binary, true);
+std::vector<Gltf_soup> read_gltf_levels(const std::string& path, bool binary,
+                                        const std::string& asset_root) {
+  return read_levels(path, binary, true, asset_root);
 }
 
 std::string gltf_bytes(const std::vector<Lod_level>& levels, bool binary, Gltf_encoding encoding,
@@ -1675,7 +1764,7 @@ std::string gltf_bytes(const std::vector<Lod_level>& levels, bool binary, Gltf_e
   const std::shared_ptr<const tinygltf::Model> looks =
       materials.gltf ? materials.gltf
                      : obj_material_looks(materials, !wedges.front().uvs.empty(), left_out);
-  pass_looks_through(model, *looks, fs::absolute(output_folder).lexically_normal());
+  pass_looks_through(model, *looks, Asset_folder::holding(output_folder), left_out);
   const bool quantized = encoding != Gltf_encoding::float32;
   // Every level carries the same kinds of values as the first.
   const bool skinned = !wedges.front().skins.empty() && !looks->skins.empty();

@@ -18,7 +18,9 @@ struct Gltf_soup {
   Polygon_soup soup;
   // The file's materials, textures, samplers and images, for a glTF file written from this mesh
   // to keep: an image stored in the file (a bufferView or a data URI) keeps its bytes as they
-  // were, undecoded; an image in a file of its own keeps its uri, made absolute.
+  // were, undecoded; an image in a file of its own keeps its uri, made absolute (the file's path,
+  // its links resolved), or is left out, with a line in `left_out`, when it lies outside the
+  // asset folder.
   // With skin influences, it also holds the skeleton they refer to (keep_skeleton in
   // gltf_io.cpp): the skin, its joint nodes and their ancestors, and its inverse bind matrices.
   std::shared_ptr<const tinygltf::Model> looks;
@@ -60,9 +62,11 @@ struct Gltf_soup {
 // (unreadable input, "<path>: <cause>") for a file tinygltf cannot load (malformed JSON or GLB, a
 // buffer file missing), a required extension other than those three and KHR_texture_transform,
 // compressed data that do not decode, an accessor or index out of range, a position, normal,
-// texture coordinate or colour that is not finite. A node's MSFT_lod is not followed: this is the
-// finest level (read_gltf_levels reads them all).
-Gltf_soup read_gltf(const std::string& path, bool binary);
+// texture coordinate or colour that is not finite, and for a buffer file outside the asset folder
+// (Asset_folder.h: `asset_root`, or the file's folder when empty), whose message names the uri and
+// nothing of the file it leads to. A node's MSFT_lod is not followed: this is the finest level
+// (read_gltf_levels reads them all).
+Gltf_soup read_gltf(const std::string& path, bool binary, const std::string& asset_root = {});
 
 // The levels of detail of the file at `path`, finest first, each read as read_gltf reads the file,
 // all sharing one `looks`. Level 0 is what read_gltf reads. Level k puts, in place of each node
@@ -70,7 +74,8 @@ Gltf_soup read_gltf(const std::string& path, bool binary);
 // or the last one when it names fewer: that node goes under the same parent, with its own
 // transform and children. Without MSFT_lod, one level. Throws as read_gltf does, and for an
 // MSFT_lod without an array `ids`, or whose ids name a node that does not exist or has no mesh.
-std::vector<Gltf_soup> read_gltf_levels(const std::string& path, bool binary);
+std::vector<Gltf_soup> read_gltf_levels(const std::string& path, bool binary,
+                                        const std::string& asset_root = {});
 
 // The bytes of a glTF file (GLB when `binary`) holding `levels`, each a mesh of its own and a node
 // holding it: one vertex per wedge (Wedge_mesh.h), one primitive per material in the order of the
@@ -95,7 +100,9 @@ std::vector<Gltf_soup> read_gltf_levels(const std::string& path, bool binary);
 // level) naming the other levels' nodes in order, and extras.MSFT_screencoverage their screen
 // coverages, one per level. Materials, shared by the levels: those of `materials.gltf` when the
 // mesh was read from glTF, passed through with their textures, samplers and images (an image the
-// input held is embedded, an image file is named by its path relative to `output_folder`);
+// input held is embedded, an image file is named by its path relative to `output_folder` when it
+// lies in that folder, and embedded otherwise, or left out with a line in `left_out` when it cannot
+// be read or is neither a PNG nor a JPEG image: the file names nothing outside its folder);
 // otherwise those of obj_material_looks (obj_material_looks.h), their diffuse maps embedded as base
 // colour textures when the meshes have texture coordinates, and `left_out` gets a line for each map
 // left out. A .gltf file holds its buffer, embedded images included, as a base64 data URI.

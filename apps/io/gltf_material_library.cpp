@@ -1,6 +1,8 @@
 #include "gltf_material_library.h"
 
+#include "Asset_folder.h"
 #include "Io_error.h"
+#include "gltf_images.h"
 #include "material_texture.h"
 #include "obj_writer.h"
 
@@ -28,26 +30,36 @@ Gltf_material_library gltf_material_library(const tinygltf::Model& looks,
                                             const std::vector<bool>& used,
                                             const std::string& path) {
   const fs::path obj(path);
-  const fs::path folder = fs::absolute(obj).parent_path().lexically_normal();
+  const Asset_folder folder = Asset_folder::holding(fs::absolute(obj).parent_path());
   const std::string stem = obj.stem().string();
   const std::string library_path = (obj.parent_path() / (stem + ".mtl")).string();
   Gltf_material_library library;
   std::vector<Gltf_material_library::File> images;
-  // Each image's map_Kd once known, so that materials sharing an image share its file; empty
-  // when it cannot be one.
-  std::map<int, std::string> map_of_image;
+  // Each image's map_Kd once known, so that materials sharing an image share its file; an empty
+  // map when it cannot be one, and why when it is a file that cannot be read.
+  struct Map {
+    std::string file, failure;
+  };
+  std::map<int, Map> map_of_image;
   const auto diffuse_map = [&](int index) {
-    const auto [known, first] = map_of_image.emplace(index, "");
+    const auto [known, first] = map_of_image.emplace(index, Map());
     if (!first) return known->second;
     const tinygltf::Image& image = looks.images[std::size_t(index)];
+    Image_file bytes{image.image, image_mime_type(image.image), ""};
     if (!image.uri.empty()) {
-      known->second = fs::path(image.uri).lexically_relative(folder).string();
-    } else if (const std::string type = image_mime_type(image.image); !type.empty()) {
-      known->second =
-          stem + "_image" + std::to_string(index) + (type == "image/png" ? ".png" : ".jpg");
-      images.push_back({(obj.parent_path() / known->second).string(),
-                        std::string(image.image.begin(), image.image.end())});
+      // A file in the library's folder is named; any other is copied beside it.
+      if (const Asset_folder::Resolved inside = folder.check(image.uri); inside.refusal.empty()) {
+        known->second.file = inside.path.lexically_relative(folder.root()).string();
+        return known->second;
+      }
+      bytes = read_image_file(image.uri);
+      if (!bytes.failure.empty()) known->second.failure = "'" + image.uri + "' " + bytes.failure;
     }
+    if (bytes.mime_type.empty() || !bytes.failure.empty()) return known->second;
+    known->second.file = stem + "_image" + std::to_string(index) +
+                         (bytes.mime_type == "image/png" ? ".png" : ".jpg");
+    images.push_back({(obj.parent_path() / known->second.file).string(),
+                      std::string(bytes.bytes.begin(), bytes.bytes.end())});
     return known->second;
   };
   std::vector<Mtl_material> materials;
@@ -62,11 +74,14 @@ Gltf_material_library gltf_material_library(const tinygltf::Model& looks,
     }
     if (material.pbrMetallicRoughness.baseColorTexture.index >= 0) {
       const int image = base_color_image(looks, m);
-      if (image >= 0) written.diffuse_map = diffuse_map(image);
+      const Map map = image >= 0 ? diffuse_map(image) : Map();
+      written.diffuse_map = map.file;
       if (written.diffuse_map.empty())
-        library.left_out.push_back(library_path + ": material '" + names[m] +
-                                   "': its base colour texture has no PNG or JPEG image; "
-                                   "written without it");
+        library.left_out.push_back(library_path + ": material '" + names[m] + "': " +
+                                   (map.failure.empty()
+                                        ? "its base colour texture has no PNG or JPEG image"
+                                        : "the image of its base colour texture, " + map.failure) +
+                                   "; written without it");
     }
     materials.push_back(std::move(written));
   }

@@ -1,11 +1,14 @@
 #include "mesh_io.h"
 
+#include "Asset_folder.h"
 #include "Io_error.h"
 #include "atomic_write.h"
 #include "clean_triangle_soup.h"
 #include "declared_counts.h"
 #include "gltf_io.h"
 #include "gltf_material_library.h"
+#include "material_library_copy.h"
+#include "material_texture.h"
 #include "obj_writer.h"
 #include "ply_writer.h"
 #include "soup_readers.h"
@@ -211,23 +214,26 @@ std::optional<Mesh> read_clean_ply(const std::string& path, std::string_view byt
 }
 
 // The mesh of `soup`, read from `path` (any format but STL; a glTF file's `gltf_looks`), as
-// read_triangle_mesh makes it; its errors name `source`.
+// read_triangle_mesh makes it with `options`; its errors name `source`. An OBJ file's material
+// libraries outside the asset folder get a line in `left_out`.
 Mesh mesh_of_soup(const std::string& path, const std::string& source, Polygon_soup& soup,
                   std::shared_ptr<const tinygltf::Model> gltf_looks, Read_report* report,
-                  Corner_attribute_reading attributes, std::size_t threads = 1) {
-  if (attributes == Corner_attribute_reading::drop)
-    return triangle_mesh_from_soup(source, soup.points, soup.polygons, report, nullptr, threads);
+                  const Read_options& options, std::vector<std::string>& left_out) {
+  if (options.attributes == Corner_attribute_reading::drop)
+    return triangle_mesh_from_soup(source, soup.points, soup.polygons, report, nullptr,
+                                   options.threads);
   const Corner_tables& tables = soup.corners;
   if (lower_extension(path) == ".ply" &&
       !(tables.uvs.empty() && tables.normals.empty() && tables.colors.empty()))
     join_equal_points(soup);
-  Mesh mesh =
-      triangle_mesh_from_soup(source, soup.points, soup.polygons, report, &soup.corners, threads);
+  Mesh mesh = triangle_mesh_from_soup(source, soup.points, soup.polygons, report, &soup.corners,
+                                      options.threads);
   const Attributes kept(mesh);
   if (report && (kept.materials || kept.skins)) {  // a glTF file's looks hold its skeleton too
-    const fs::path folder = fs::absolute(path).parent_path();
-    for (const std::string& library : soup.corners.material_libraries)
-      report->materials.libraries.push_back((folder / library).lexically_normal().string());
+    const Asset_folder folder(path, options.asset_root);
+    report->materials.libraries =
+        material_library_paths(path, soup.corners.material_libraries, folder, left_out);
+    report->materials.asset_root = folder.root().string();
     report->materials.names = soup.corners.material_names;
     report->materials.gltf = std::move(gltf_looks);
   }
@@ -266,7 +272,9 @@ std::vector<bool> used_materials(const std::vector<Lod_level>& levels, std::size
 
 // Level k into paths[k], all or none, in any format but glTF (write_mesh_atomically); OBJ files of
 // a glTF input's mesh with the material library and images of gltf_material_library, named after
-// `path`, in the same go. Returns the textures left out.
+// `path`, in the same go; an OBJ input's libraries named from the files' folder, or copied beside
+// them with their textures when they lie outside it (material_library_copy), so that the files
+// name nothing outside their folder. Returns the textures left out.
 std::vector<std::string> write_files_atomically(const std::vector<Lod_level>& levels,
                                                 const std::string& path,
                                                 const std::vector<std::string>& paths,
@@ -277,22 +285,26 @@ std::vector<std::string> write_files_atomically(const std::vector<Lod_level>& le
   if (obj && materials.gltf)
     library = gltf_material_library(*materials.gltf, materials.names,
                                     used_materials(levels, materials.names.size()), path);
-  std::vector<std::string> files = paths;
+  Material_library_copy copy;
+  if (obj) copy = material_library_copy(materials, path);
+  std::vector<std::string> files = paths, left_out = library.left_out;
   for (const Gltf_material_library::File& file : library.files) files.push_back(file.path);
+  for (const Material_library_copy::File& file : copy.files) files.push_back(file.path);
+  left_out.insert(left_out.end(), copy.left_out.begin(), copy.left_out.end());
   if (materials.gltf) check_no_image_of(*materials.gltf, files);
+  check_no_source_of(copy, files);
   if (files.size() > kMaxFilesWrittenAtOnce)
     throw Io_error(Io_error::Kind::unwritable_output,
                    path + ": cannot write " + std::to_string(files.size()) +
                        " files at once (levels, material library and images); at most " +
                        std::to_string(kMaxFilesWrittenAtOnce));
   // A glTF input's library, beside the files; an OBJ input's, named from their folder.
-  std::vector<std::string> libraries;
+  std::vector<std::string> libraries = copy.names;
   if (!library.files.empty())
-    libraries.push_back(fs::path(library.files.front().path).filename().string());
-  const fs::path folder = fs::absolute(path).parent_path();
-  for (const std::string& input_library : materials.libraries)
-    libraries.push_back(fs::path(input_library).lexically_relative(folder).string());
+    libraries.insert(libraries.begin(), fs::path(library.files.front().path).filename().string());
   write_all_atomically(files, [&](std::size_t k, const std::string& temporary) {
+    if (k >= levels.size() + library.files.size())
+      return write_bytes(temporary, copy.files[k - levels.size() - library.files.size()].bytes);
     if (k >= levels.size()) return write_bytes(temporary, library.files[k - levels.size()].bytes);
     const Mesh& mesh = *levels[k].mesh;
     if (obj && Attributes(mesh).any())
@@ -301,7 +313,6 @@ std::vector<std::string> write_files_atomically(const std::vector<Lod_level>& le
       return write_bytes(temporary, ply_bytes(wedge_mesh(mesh)));
     return CGAL::IO::write_polygon_mesh(temporary, mesh, CGAL::parameters::stream_precision(17));
   });
-  std::vector<std::string> left_out = library.left_out;
   // OBJ and PLY hold one set of texture coordinates and no skin; the others no corner values at
   // all.
   if (!obj && extension != ".ply") return left_out;
@@ -342,6 +353,10 @@ bool has_supported_mesh_extension(const std::string& path) {
 
 Mesh read_triangle_mesh(const std::string& path, Read_report* report,
                         Corner_attribute_reading attributes, std::size_t threads) {
+  return read_triangle_mesh(path, Read_options{attributes, threads, {}}, report);
+}
+
+Mesh read_triangle_mesh(const std::string& path, const Read_options& options, Read_report* report) {
   check_readable_file(path);
   check_declared_counts(path);
   const std::string extension = lower_extension(path);
@@ -350,7 +365,7 @@ Mesh read_triangle_mesh(const std::string& path, Read_report* report,
     std::vector<std::string> left_out;
     Polygon_soup soup;
     if (is_gltf(extension)) {
-      Gltf_soup read = read_gltf(path, extension == ".glb");
+      Gltf_soup read = read_gltf(path, extension == ".glb", options.asset_root);
       gltf_looks = std::move(read.looks);
       left_out = std::move(read.left_out);
       soup = std::move(read.soup);
@@ -359,10 +374,10 @@ Mesh read_triangle_mesh(const std::string& path, Read_report* report,
       if (extension != ".ply")
         soup = extension == ".obj" ? parse_obj(path, bytes) : parse_off(path, bytes);
       else if (std::optional<Mesh> mesh =
-                   read_clean_ply(path, bytes, report, attributes, threads, soup))
+                   read_clean_ply(path, bytes, report, options.attributes, options.threads, soup))
         return std::move(*mesh);
     }
-    Mesh mesh = mesh_of_soup(path, path, soup, std::move(gltf_looks), report, attributes, threads);
+    Mesh mesh = mesh_of_soup(path, path, soup, std::move(gltf_looks), report, options, left_out);
     if (report) report->left_out = std::move(left_out);
     return mesh;
   }
@@ -403,20 +418,24 @@ Mesh triangle_mesh_from_soup(const std::string& path, std::vector<Point>& points
   return mesh;
 }
 
-std::vector<Mesh> read_lod_chain(const std::string& path, Read_report* report,
-                                 Corner_attribute_reading attributes) {
+std::vector<Mesh> read_lod_chain(const std::string& path, const Read_options& options,
+                                 Read_report* report) {
+  Read_options one_thread = options;
+  one_thread.threads = 1;
   std::vector<Mesh> levels;
   if (!is_gltf_file(path)) {
-    levels.push_back(read_triangle_mesh(path, report, attributes));
+    levels.push_back(read_triangle_mesh(path, one_thread, report));
     return levels;
   }
   check_readable_file(path);
-  std::vector<Gltf_soup> soups = read_gltf_levels(path, lower_extension(path) == ".glb");
+  std::vector<Gltf_soup> soups =
+      read_gltf_levels(path, lower_extension(path) == ".glb", options.asset_root);
   for (std::size_t k = 0; k < soups.size(); ++k) {
     const std::string level = "level " + std::to_string(k);
     Read_report level_report;
     levels.push_back(mesh_of_soup(path, k == 0 ? path : path + " (" + level + ")", soups[k].soup,
-                                  soups[k].looks, report ? &level_report : nullptr, attributes));
+                                  soups[k].looks, report ? &level_report : nullptr, one_thread,
+                                  soups[k].left_out));
     if (!report) continue;
     if (k == 0) {
       *report = std::move(level_report);     // its materials are every level's

@@ -22,13 +22,15 @@ namespace cgal_policies {
 namespace io {
 
 // What the faces of a mesh read from an OBJ or glTF file refer to outside it: the material
-// libraries (paths resolved against the folder of the file read), the material names that the
-// face material map (cgal_policies::Corner_attributes) indexes, and from a glTF file its
-// materials themselves, with their textures and images, and the skeleton of its skin (gltf_io.h),
-// for a glTF output to keep.
+// libraries (paths resolved against the folder of the file read, inside its asset folder), the
+// material names that the face material map (cgal_policies::Corner_attributes) indexes, and from
+// a glTF file its materials themselves, with their textures and images, and the skeleton of its
+// skin (gltf_io.h), for a glTF output to keep. `asset_root` is the folder the libraries' texture
+// images may come from (Asset_folder.h): the reader's; empty, each library's own folder.
 struct Material_references {
   std::vector<std::string> libraries, names;
   std::shared_ptr<const tinygltf::Model> gltf;
+  std::string asset_root;
 };
 
 struct Read_report {
@@ -55,8 +57,22 @@ bool is_gltf_file(const std::string& path);
 // PLY, glTF).
 bool writes_corner_attributes(const std::string& path);
 
+// How a file is read: whether with its corner attributes; on how many cores a clean mesh's points
+// are checked (0: all of them); and from where the files it names may come (a glTF file's buffers
+// and images, an OBJ file's material libraries and their textures): empty, the folder of the file
+// read and the folders below it; else a folder holding the file, for trusted assets that share
+// files above their own folder (Asset_folder.h). A buffer from elsewhere is an error; a material
+// library or an image from elsewhere is left out, with a line in Read_report::left_out.
+struct Read_options {
+  Corner_attribute_reading attributes = Corner_attribute_reading::drop;
+  std::size_t threads = 1;
+  std::string asset_root;
+};
+
 // Reads a triangle mesh; throws Io_error (unreadable input, "<path>: <cause>") when it cannot.
-// Building a clean mesh checks its points on up to `threads` cores (0: all of them).
+Mesh read_triangle_mesh(const std::string& path, const Read_options& options,
+                        Read_report* report = nullptr);
+// The same, the files it names confined to its folder.
 Mesh read_triangle_mesh(const std::string& path, Read_report* report = nullptr,
                         Corner_attribute_reading attributes = Corner_attribute_reading::drop,
                         std::size_t threads = 1);
@@ -66,10 +82,10 @@ Mesh read_triangle_mesh(const std::string& path, Read_report* report = nullptr,
 // write_lod_chain_atomically writes them); any other file, or a glTF file without MSFT_lod, is one
 // level. `report` gets level 0's materials, which every level shares, and every level's repairs,
 // those of level k > 0 after "level k: ". Throws Io_error (unreadable input) as read_triangle_mesh
-// and read_gltf_levels do; an error in level k > 0's mesh names "<path> (level k)".
-std::vector<Mesh> read_lod_chain(
-    const std::string& path, Read_report* report = nullptr,
-    Corner_attribute_reading attributes = Corner_attribute_reading::drop);
+// and read_gltf_levels do; an error in level k > 0's mesh names "<path> (level k)". Read with
+// `options` (but for its threads: one).
+std::vector<Mesh> read_lod_chain(const std::string& path, const Read_options& options = {},
+                                 Read_report* report = nullptr);
 
 // The reader's second half: checks the soup (faces, finite points, indices in range), splits its
 // polygons into triangles (soup_repair.h: none is refused for its shape), builds the mesh directly

@@ -20,10 +20,11 @@ namespace {
 int embedded_texture(const Diffuse_map& map, tinygltf::Model& looks,
                      std::vector<std::string>& left_out) {
   const auto leave_out = [&](const std::string& cause) {
-    left_out.push_back(map.library + ": texture '" + map.file + "' " + cause +
+    left_out.push_back(map.library + ": texture " + Asset_folder::quoted(map.file) + " " + cause +
                        "; written without it");
     return -1;
   };
+  if (!map.refusal.empty()) return leave_out(map.refusal);
   if (!std::filesystem::is_regular_file(map.path)) return leave_out("does not exist");
   std::ifstream file(map.path, std::ios::binary);
   if (!file) return leave_out("cannot be read");
@@ -60,7 +61,9 @@ std::shared_ptr<const tinygltf::Model> obj_material_looks(const Material_referen
     tinygltf::Material material;
     material.name = materials.names[m];
     if (const std::optional<Diffuse_map>& map = maps[m]) {
-      const auto [known, first] = texture_of_file.emplace(map->path, -1);
+      // A refused file has no path: it is known by its line.
+      const std::string key = map->refusal.empty() ? map->path : map->library + '\n' + map->file;
+      const auto [known, first] = texture_of_file.emplace(key, -1);
       if (first) known->second = embedded_texture(*map, *looks, left_out);
       material.pbrMetallicRoughness.baseColorTexture.index = known->second;
     }

@@ -49,7 +49,8 @@ void print_help() {
          "  --lod-level K         show MESH's level of detail K, 0 the finest (default 0)\n"
          "  --snapshot OUT.png    render the view without a window, write it and exit\n"
          "  --size WxH            the snapshot's size in pixels (default 1600x800)\n"
-         "  --help                this text\n\n"
+      << kAssetRootHelp
+      << "  --help                this text\n\n"
          "Policy options are those of simplify (see simplify --help).\n"
          "Exit codes: 0 done, 1 not done, 2 bad usage, 3 bad input, 4 output not written.\n";
 }
@@ -90,6 +91,7 @@ int run(int argc, char** argv) {
   snapshot.view.wireframe = cli.take_flag("wireframe");
   snapshot.heat_map = cli.take_flag("heat-map");
   const auto level = std::size_t(cli.take_whole_number("lod-level", 0, kMaxCount).value_or(0));
+  const std::string asset_root = take_asset_root(cli);
   const std::vector<std::string> args = cli.positionals();
   if (args.size() != 1)
     throw App_error(exit_usage, "usage: mesh_viewer MESH [options] (see --help)");
@@ -99,7 +101,8 @@ int run(int argc, char** argv) {
     throw App_error(exit_usage, *png + ": the snapshot must be a .png file");
 
   Read_report report;
-  std::vector<Mesh> levels = read_lod_chain(args[0], &report, Corner_attribute_reading::keep);
+  std::vector<Mesh> levels =
+      read_lod_chain(args[0], {Corner_attribute_reading::keep, 1, asset_root}, &report);
   // Its range is known once MESH is read.
   if (level >= levels.size())
     throw App_error(exit_usage, "--lod-level must be a whole number in [0, " +

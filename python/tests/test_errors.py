@@ -1,5 +1,6 @@
 """Options refused with the command line's messages, interruption, and no leak over many calls."""
 import _thread
+import json
 import threading
 import time
 
@@ -94,3 +95,28 @@ def test_no_leak_over_a_thousand_calls():
     calls(1000)
     # A leak of a single input's mesh (about 60 KiB) per call would add some 60 MiB.
     assert resident_kib() - before < 4096
+
+
+def _gltf_naming(path, uri):
+    """A glTF file at `path`: one triangle, its points in the buffer file `uri` names."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(json.dumps({
+        "asset": {"version": "2.0"},
+        "buffers": [{"uri": uri, "byteLength": 36}],
+        "bufferViews": [{"buffer": 0, "byteLength": 36}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+        "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0}))
+    return path
+
+
+def test_a_file_reads_nothing_outside_its_folder_unless_a_root_widens_it(tmp_path):
+    np.array([0, 0, 0, 1, 0, 0, 0, 1, 0], dtype="<f4").tofile(tmp_path / "shared.bin")
+    gltf = _gltf_naming(tmp_path / "asset" / "model.gltf", "../shared.bin")
+    with pytest.raises(ValueError, match=r"a buffer's uri '\.\./shared\.bin' leads outside the "
+                                         r"asset's folder"):
+        cp.read(gltf)
+    assert cp.read(gltf, asset_root=tmp_path).faces.shape == (1, 3)
+    outside = _gltf_naming(tmp_path / "asset" / "deeper" / "model.gltf", "../../../shared.bin")
+    with pytest.raises(ValueError, match="leads outside the asset's folder"):
+        cp.read(outside, asset_root=tmp_path)

@@ -854,7 +854,7 @@ Mesh textured_grid() {
 TEST_F(Cli, SimplifyPassesAGlbsMaterialsAndImagesThrough) {
   // A textured grid written by the apps, then given an embedded and an external image.
   const fs::path plain = file("plain.glb");
-  apps::write_mesh_atomically(textured_grid(), plain.string(), {{}, {"skin"}, nullptr});
+  apps::write_mesh_atomically(textured_grid(), plain.string(), {{}, {"skin"}, nullptr, {}});
   tinygltf::Model model;
   std::string error, warning;
   ASSERT_TRUE(tinygltf::TinyGLTF().LoadBinaryFromFile(&model, &error, &warning, plain.string()))
@@ -880,6 +880,9 @@ TEST_F(Cli, SimplifyPassesAGlbsMaterialsAndImagesThrough) {
     std::ofstream out(in, std::ios::binary);
     tinygltf::TinyGLTF().WriteGltfSceneToStream(&model, out, false, true);
   }
+  const std::string skin = std::string("\xff\xd8\xff\xe0", 4) + "the skin's pixels";
+  fs::create_directories(file("tex"));
+  std::ofstream(file("tex") / "skin.png", std::ios::binary) << skin;
 
   fs::create_directories(file("out"));
   const fs::path out = file("out") / "out.glb";
@@ -894,7 +897,11 @@ TEST_F(Cli, SimplifyPassesAGlbsMaterialsAndImagesThrough) {
             kImageBytes);
   EXPECT_EQ(read.looks->images[0].mimeType, "image/png");
   EXPECT_TRUE(read.looks->images[0].uri.empty());  // still in the file
-  EXPECT_EQ(read.looks->images[1].uri, file("tex/skin.png").string());
+  // The image file, outside OUT's folder, is embedded: OUT names no file outside its folder.
+  EXPECT_TRUE(read.looks->images[1].uri.empty());
+  EXPECT_EQ(std::string(read.looks->images[1].image.begin(), read.looks->images[1].image.end()),
+            skin);
+  EXPECT_EQ(read.looks->images[1].mimeType, "image/jpeg");
   ASSERT_EQ(read.looks->materials.size(), 1u);
   EXPECT_EQ(read.looks->materials[0].name, "skin");
   EXPECT_EQ(read.looks->materials[0].pbrMetallicRoughness.baseColorTexture.index, 0);
@@ -902,8 +909,14 @@ TEST_F(Cli, SimplifyPassesAGlbsMaterialsAndImagesThrough) {
   EXPECT_EQ(read.looks->textures.size(), 2u);
   EXPECT_EQ(read.soup.corners.polygon_materials,
             std::vector<std::uint32_t>(read.soup.polygons.size(), 0));
-  // The file names the image by its path from its own folder.
-  EXPECT_NE(read_text(out).find("\"uri\":\"../tex/skin.png\""), std::string::npos);
+  EXPECT_EQ(read_text(out).find("\"uri\""), std::string::npos);
+
+  // Written beside IN, the file names the image by its path from its own folder.
+  const fs::path beside = file("beside.glb");
+  ASSERT_EQ(
+      run("simplify", in.string() + " " + beside.string() + " 0.5 --policy gh --quiet").exit_code,
+      0);
+  EXPECT_NE(read_text(beside).find("\"uri\":\"tex/skin.png\""), std::string::npos);
 }
 
 TEST_F(Cli, SimplifyWritesATexturedObjAsGlb) {
@@ -963,7 +976,7 @@ TEST_F(Cli, SimplifyWritesAGlbWithoutAMissingTextureAndOneWarning) {
   const fs::path in = file("grid.obj"), out = file("grid.glb");
   const fs::path library = write("grid.mtl", "newmtl skin\nmap_Kd missing.png\n");
   apps::write_mesh_atomically(textured_grid(), in.string(),
-                              {{library.string()}, {"skin"}, nullptr});
+                              {{library.string()}, {"skin"}, nullptr, {}});
   const Command_result r =
       run("simplify", in.string() + " " + out.string() + " 0.5 --policy gh --quiet --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -1502,6 +1515,55 @@ TEST_F(Cli, OutOfCoreRefusesWhatItCannotStream) {
     EXPECT_NE(r.err.find("--out-of-core never holds IN whole"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(out));
   }
+}
+
+// The security defect of the glTF buffer with ".." (docs/reliability.md, "What an asset can make
+// the tools read"): a buffer naming /etc/passwd, its size right, read as 32-bit float points. The
+// tools refuse it, in one line naming the asset and the reference and nothing of the file, and
+// write nothing; --asset-root widens the folder to a root that holds the asset, and no further.
+TEST_F(Cli, AnAssetNamingAFileOutsideItsFolderIsBadInput) {
+  const auto gltf = [](const std::string& uri, std::uintmax_t bytes) {
+    const std::size_t points = std::size_t(bytes / 12);
+    return R"({"asset":{"version":"2.0"},"buffers":[{"uri":")" + uri + R"(","byteLength":)" +
+           std::to_string(bytes) + R"(}],"bufferViews":[{"buffer":0,"byteLength":)" +
+           std::to_string(points * 12) +
+           R"(}],"accessors":[{"bufferView":0,"componentType":5126,"count":)" +
+           std::to_string(points) +
+           R"(,"type":"VEC3"}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],)"
+           R"("nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0})";
+  };
+  fs::create_directories(file("asset"));
+  const std::string passwd = "../../../../../../../../../../../../etc/passwd";
+  const fs::path leak = write("asset/leak.gltf", gltf(passwd, fs::file_size("/etc/passwd")));
+  const fs::path out = file("out.obj");
+  for (const std::string& root : {std::string(), " --asset-root " + file("").string()}) {
+    SCOPED_TRACE(root);
+    expect_failure(leak.string() + " " + out.string() + " 1" + root, 3, leak, out);
+    const Command_result r = run("simplify", leak.string() + " " + out.string() + " 1" + root);
+    EXPECT_NE(r.err.find("a buffer's uri '" + passwd + "' leads outside the asset's folder"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(r.err.find("root:"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find(std::to_string(fs::file_size("/etc/passwd"))), std::string::npos) << r.err;
+  }
+  const Command_result measured = run("mesh_error", leak.string() + " " + leak.string());
+  EXPECT_EQ(measured.exit_code, 3) << measured.err;
+  EXPECT_NE(measured.err.find("leads outside the asset's folder"), std::string::npos);
+
+  // A folder the assets share, above their own: read with --asset-root alone.
+  const float triangle[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  write("shared.bin", std::string(reinterpret_cast<const char*>(triangle), sizeof triangle));
+  const fs::path shared = write("asset/shared.gltf", gltf("../shared.bin", 36));
+  expect_failure(shared.string() + " " + out.string() + " 1", 3, shared, out);
+  const Command_result widened = run(
+      "simplify", shared.string() + " " + out.string() + " 1 --asset-root " + file("").string());
+  EXPECT_EQ(widened.exit_code, 0) << widened.err;
+  const Command_result no_folder =
+      run("simplify", shared.string() + " " + out.string() + " 1 --force --asset-root " +
+                          file("missing").string());
+  EXPECT_EQ(no_folder.exit_code, 2) << no_folder.err;
+  EXPECT_EQ(no_folder.err,
+            "simplify: --asset-root: '" + file("missing").string() + "' is not a folder\n");
 }
 
 }  // namespace

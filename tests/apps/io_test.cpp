@@ -743,6 +743,7 @@ fs::path scratch_folder(const std::string& name) {
 TEST(CornerAttributes, APolygonsTrianglesKeepItsCornersAndMaterial) {
   const fs::path folder = scratch_folder("polygon");
   // A pentagon with a corner of each texture coordinate, beside a triangle of no material.
+  std::ofstream(folder / "looks.mtl") << "newmtl wood\nKd 0.5 0.25 0\n";
   std::ofstream(folder / "in.obj")
       << "mtllib looks.mtl\nv 0 0 0\nv 2 0 0\nv 3 1 0\nv 1 2 0\nv -1 1 0\nv 1 -1 0\n"
          "vt 0 0\nvt 1 0\nvt 1 1\nvt 0.5 1\nvt 0 1\nvn 0 0 1\nf 1 6 2\nusemtl wood\n"
@@ -775,16 +776,20 @@ TEST(CornerAttributes, APolygonsTrianglesKeepItsCornersAndMaterial) {
     }
   EXPECT_EQ(wood_corners, 9u);  // three triangles
 
-  // Written into another folder and read back: the same corners, the material file found.
+  // Written into another folder and read back: the same corners, the material library copied
+  // beside the file, which names nothing outside its folder.
   const fs::path out = folder / "out" / "again.obj";
-  apps::write_mesh_atomically(mesh, out.string(), report.materials);
+  EXPECT_EQ(apps::write_mesh_atomically(mesh, out.string(), report.materials),
+            std::vector<std::string>{});
   const std::string text = read_text(out);
-  EXPECT_EQ(text.rfind("# written by cgal_policies\nmtllib ../looks.mtl\n", 0), 0u) << text;
+  EXPECT_EQ(text.rfind("# written by cgal_policies\nmtllib again.mtl\n", 0), 0u) << text;
+  EXPECT_EQ(read_text(folder / "out" / "again.mtl"), "newmtl wood\nKd 0.5 0.25 0\n");
   apps::Read_report again;
   EXPECT_EQ(face_corners(apps::read_triangle_mesh(out.string(), &again,
                                                   apps::Corner_attribute_reading::keep)),
             face_corners(mesh));
-  EXPECT_EQ(again.materials.libraries, report.materials.libraries);
+  EXPECT_EQ(again.materials.libraries,
+            std::vector<std::string>{(folder / "out" / "again.mtl").string()});
   fs::remove_all(folder);
 }
 
@@ -932,7 +937,19 @@ TEST(CornerAttributes, ShippedTexturedMeshesRoundTripExactly) {
                                                     apps::Corner_attribute_reading::keep)),
               face_corners(mesh));
     EXPECT_EQ(again.materials.names, report.materials.names);
-    EXPECT_EQ(again.materials.libraries, report.materials.libraries);
+    // A library from another folder is copied beside the file, with its texture.
+    if (report.materials.libraries.empty()) {
+      EXPECT_TRUE(again.materials.libraries.empty());
+    } else {
+      const fs::path stem = out.parent_path() / out.stem();
+      EXPECT_EQ(again.materials.libraries,
+                std::vector<std::string>{fs::canonical(stem.string() + ".mtl").string()});
+      std::vector<std::string> maps;
+      for (const std::optional<apps::Diffuse_map>& map : apps::diffuse_maps(again.materials))
+        if (map) maps.push_back(read_text(map->path));
+      EXPECT_EQ(maps,
+                std::vector<std::string>{read_text(test_meshes::data_file("bob_diffuse.png"))});
+    }
   }
   fs::remove_all(folder);
 }
@@ -1021,7 +1038,7 @@ Mesh painted_cube(int per_side = 4) {
 TEST(Gltf, ARoundTripKeepsEveryCornerToFloatPrecision) {
   const fs::path folder = scratch_folder("gltf_round_trip");
   const Mesh cube = painted_cube();
-  const apps::Material_references names{{}, {"even", "odd"}, nullptr};
+  const apps::Material_references names{{}, {"even", "odd"}, nullptr, {}};
   for (const std::string name : {"cube.gltf", "cube.glb"}) {
     SCOPED_TRACE(name);
     const fs::path out = folder / name;
@@ -1159,7 +1176,7 @@ void expect_within_steps(const Mesh& source, const Mesh& read, double position_s
 // ones.
 TEST(Gltf, QuantizedAndMeshoptOutputsReadBackWithinAStep) {
   const fs::path folder = scratch_folder("gltf_encodings");
-  const apps::Material_references names{{}, {"even", "odd"}, nullptr};
+  const apps::Material_references names{{}, {"even", "odd"}, nullptr, {}};
   struct Uv_case {
     std::string name;
     std::array<double, 3> uv_map;
@@ -1453,7 +1470,7 @@ std::set<std::string> texture_coordinate_lines(const std::string& obj) {
 TEST(Gltf, AnObjOfAGltfGetsAMaterialLibraryAndTheImagesTheGltfHeld) {
   const fs::path folder = scratch_folder("gltf_to_obj");
   fs::create_directories(folder / "tex");
-  std::ofstream(folder / "tex" / "skin.png") << "named, never read";
+  std::ofstream(folder / "tex" / "skin.png") << gltf_fixtures::kImageBytes;
   using Case = std::tuple<std::string, int, std::string, std::string>;
   for (const auto& [name, paint_texture, image, bytes] :
        {Case{"glb", 0, "square_image0.png", gltf_fixtures::kImageBytes},
@@ -1469,11 +1486,14 @@ TEST(Gltf, AnObjOfAGltfGetsAMaterialLibraryAndTheImagesTheGltfHeld) {
     const fs::path out = out_folder / "square.obj";
     EXPECT_EQ(apps::write_mesh_atomically(mesh, out.string(), report.materials),
               std::vector<std::string>{});
-    EXPECT_EQ(file_names(out_folder), (std::set<std::string>{"square.obj", "square.mtl", image}));
+    // The image file outside the OBJ's folder is copied beside it.
+    EXPECT_EQ(file_names(out_folder),
+              (std::set<std::string>{"square.obj", "square.mtl", image, "square_image1.png"}));
     EXPECT_EQ(read_text(out_folder / "square.mtl"),
               "# written by cgal_policies\n\nnewmtl paint\nKd 0.5 0.25 1\nmap_Kd " + image +
-                  "\n\nnewmtl material_1\nKd 0.2 0.4 0.6\nd 0.5\nmap_Kd ../tex/skin.png\n");
+                  "\n\nnewmtl material_1\nKd 0.2 0.4 0.6\nd 0.5\nmap_Kd square_image1.png\n");
     EXPECT_EQ(read_text(out_folder / image), bytes);
+    EXPECT_EQ(read_text(out_folder / "square_image1.png"), gltf_fixtures::kImageBytes);
     const std::string obj = read_text(out);
     EXPECT_EQ(obj.rfind("# written by cgal_policies\nmtllib square.mtl\n", 0), 0u) << obj;
     EXPECT_NE(obj.find("\nusemtl paint\n"), std::string::npos) << obj;
@@ -1492,7 +1512,7 @@ TEST(Gltf, AnObjOfAGltfGetsAMaterialLibraryAndTheImagesTheGltfHeld) {
     for (const std::optional<apps::Diffuse_map>& map : apps::diffuse_maps(again.materials))
       maps.push_back(map ? map->path : "none");
     EXPECT_EQ(maps, (std::vector<std::string>{(out_folder / image).string(),
-                                              (folder / "tex" / "skin.png").string()}));
+                                              (out_folder / "square_image1.png").string()}));
   }
   fs::remove_all(folder);
 }
@@ -1545,7 +1565,7 @@ TEST(Gltf, AnObjOfAGltfAndItsLibraryAreWrittenAllOrNothing) {
 }
 
 // glTF's image uris are URI references: "a%20b_image0.png" names the file "a b_image0.png". An
-// OBJ's library names that file as it is, a glTF file written elsewhere by its URI again, and an
+// OBJ's library names that file as it is, a glTF file written beside it by its URI again, and an
 // OBJ that would write its own image over it ("a b.obj" writes paint's as "a b_image0.png") is
 // refused, the file as it was.
 TEST(Gltf, ImageUrisNameTheFilesTheyEncode) {
@@ -1553,12 +1573,11 @@ TEST(Gltf, ImageUrisNameTheFilesTheyEncode) {
   apps::Read_report report;
   const Mesh mesh =
       square_naming_an_image_file(folder, "a%20b_image0.png", "a b_image0.png", report);
-  fs::create_directories(folder / "out");
-  apps::write_mesh_atomically(mesh, (folder / "out" / "square.obj").string(), report.materials);
-  const std::string library = read_text(folder / "out" / "square.mtl");
-  EXPECT_NE(library.find("\nmap_Kd ../a b_image0.png\n"), std::string::npos) << library;
-  apps::write_mesh_atomically(mesh, (folder / "out" / "square.gltf").string(), report.materials);
-  EXPECT_EQ(gltf_json(folder / "out" / "square.gltf")["images"][1]["uri"], "../a%20b_image0.png");
+  apps::write_mesh_atomically(mesh, (folder / "square.obj").string(), report.materials);
+  const std::string library = read_text(folder / "square.mtl");
+  EXPECT_NE(library.find("\nmap_Kd a b_image0.png\n"), std::string::npos) << library;
+  apps::write_mesh_atomically(mesh, (folder / "square.gltf").string(), report.materials);
+  EXPECT_EQ(gltf_json(folder / "square.gltf")["images"][1]["uri"], "a%20b_image0.png");
   EXPECT_EQ(write_failure(mesh, folder / "a b.obj", report.materials),
             (folder / "a b_image0.png").string() + ": refusing to overwrite an image of the input");
   EXPECT_EQ(read_text(folder / "a b_image0.png"), "the input's");
@@ -1601,18 +1620,23 @@ TEST(Gltf, ATextureWithoutAPngOrJpegImageIsALineNotAFailure) {
 TEST(Gltf, ObjLevelsOfAGltfShareOneLibraryWithinTheFileLimit) {
   const fs::path folder = scratch_folder("gltf_to_obj_levels");
   gltf_fixtures::textured_square(0, 2).write(folder / "square.glb");
+  fs::create_directories(folder / "tex");
+  std::ofstream(folder / "tex" / "skin.png", std::ios::binary) << gltf_fixtures::kImageBytes;
   apps::Read_report report;
   const Mesh mesh = apps::read_triangle_mesh((folder / "square.glb").string(), &report,
                                              apps::Corner_attribute_reading::keep);
-  // Beside the levels, the library and paint's image.
-  const std::size_t most = apps::kMaxFilesWrittenAtOnce - 2;
+  // Beside the levels, the library, paint's image and a copy of the image file, which lies
+  // outside the levels' folder.
+  const std::size_t most = apps::kMaxFilesWrittenAtOnce - 3;
   std::vector<apps::Lod_level> levels(most, {&mesh, 0});
   EXPECT_EQ(apps::write_lod_chain_atomically(levels, (folder / "out" / "square.obj").string(),
                                              report.materials),
             std::vector<std::string>{});
   const std::set<std::string> written = file_names(folder / "out");
   EXPECT_EQ(written.size(), apps::kMaxFilesWrittenAtOnce);
-  EXPECT_EQ(written.count("square.mtl") + written.count("square_image0.png"), 2u);
+  EXPECT_EQ(written.count("square.mtl") + written.count("square_image0.png") +
+                written.count("square_image1.png"),
+            3u);
   for (const std::size_t level : {std::size_t(0), most - 1}) {
     const std::string obj =
         read_text(folder / "out" / ("square_lod" + std::to_string(level) + ".obj"));
@@ -1628,7 +1652,7 @@ TEST(Gltf, ObjLevelsOfAGltfShareOneLibraryWithinTheFileLimit) {
   } catch (const apps::Io_error& e) {
     EXPECT_EQ(std::string(e.what()),
               (folder / "more" / "square.obj").string() + ": cannot write " +
-                  std::to_string(most + 3) +
+                  std::to_string(most + 4) +
                   " files at once (levels, material library and images); at most " +
                   std::to_string(apps::kMaxFilesWrittenAtOnce));
   }
@@ -2122,7 +2146,7 @@ TEST(Gltf, ALodChainReadsBackAsItsLevelsWithTheirCorners) {
                                    moved_along_x(painted_cube(1), 10)};
   const std::vector<std::size_t> faces = {192, 48, 12};
   const std::vector<apps::Lod_level> levels = {{&cubes[0], 0.5}, {&cubes[1], 0.2}, {&cubes[2], 0}};
-  const apps::Material_references names{{}, {"even", "odd"}, nullptr};
+  const apps::Material_references names{{}, {"even", "odd"}, nullptr, {}};
   // Every cube spans 4 on each axis: one step of the quantized positions.
   const double step = 4.0 / 65535;
   for (const auto& [name, encoding] :
@@ -2133,7 +2157,7 @@ TEST(Gltf, ALodChainReadsBackAsItsLevelsWithTheirCorners) {
     apps::write_lod_chain_atomically(levels, out, names, encoding);
     apps::Read_report report;
     const std::vector<Mesh> read =
-        apps::read_lod_chain(out, &report, apps::Corner_attribute_reading::keep);
+        apps::read_lod_chain(out, {apps::Corner_attribute_reading::keep, 1, {}}, &report);
     ASSERT_EQ(read.size(), 3u);
     EXPECT_TRUE(report.repairs.empty());
     EXPECT_EQ(report.materials.names, names.names);
@@ -2307,7 +2331,7 @@ TEST(Gltf, ASkinnedMeshKeepsItsInfluencesAndItsSkeleton) {
     EXPECT_EQ(chain_json["nodes"][0]["skin"], 0);
     EXPECT_EQ(chain_json["nodes"][1]["skin"], 0);
     const std::vector<Mesh> levels =
-        apps::read_lod_chain(chain.string(), nullptr, apps::Corner_attribute_reading::keep);
+        apps::read_lod_chain(chain.string(), {apps::Corner_attribute_reading::keep, 1, {}});
     ASSERT_EQ(levels.size(), 2u);
     for (const Mesh& level : levels) expect_strip_influences(level, tolerance + 1.0 / 65535);
   }
@@ -2697,3 +2721,293 @@ TEST(Gltf, SkinsThatCannotBeCarriedAreLeftOutInOneLine) {
 }
 
 }  // namespace corner_attributes
+
+// ---- What an asset can make the readers read, and what a written file names ----------------
+// (Asset_folder.h, docs/reliability.md.) The files are made by hand: a glTF file's buffers and
+// images, an OBJ file's material libraries and their textures, named inside and outside its folder.
+
+namespace asset_folder {
+
+using apps::Mesh;
+using corner_attributes::file_names;
+using corner_attributes::gltf_json;
+using gltf_fixtures::Gltf_builder;
+
+// A fresh folder holding `asset/`, where each test puts the file it reads, and beside it (outside
+// the asset's folder) `secret.bin`: the unit triangle's nine floats, a buffer that would read well.
+fs::path scratch(const std::string& name) {
+  const fs::path folder =
+      fs::path(testing::TempDir()) / ("assets_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(folder);
+  fs::create_directories(folder / "asset" / "data");
+  const float triangle[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  for (const fs::path& file : {folder / "secret.bin", folder / "asset" / "data" / "tri.bin"})
+    std::ofstream(file, std::ios::binary)
+        .write(reinterpret_cast<const char*>(triangle), sizeof triangle);
+  return folder;
+}
+
+// folder/asset/leak.gltf: one triangle whose three points are read from the buffer `uri` names,
+// `byte_length` bytes long (the triangle's 36 when it is right).
+fs::path gltf_naming(const fs::path& folder, const std::string& uri, std::size_t byte_length = 36) {
+  nlohmann::json gltf = {{"asset", {{"version", "2.0"}}},
+                         {"buffers", {{{"uri", uri}, {"byteLength", byte_length}}}},
+                         {"bufferViews", {{{"buffer", 0}, {"byteLength", 36}}}},
+                         {"accessors",
+                          {{{"bufferView", 0},
+                            {"componentType", 5126},
+                            {"count", 3},
+                            {"type", "VEC3"},
+                            {"min", {0, 0, 0}},
+                            {"max", {1, 1, 0}}}}},
+                         {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}}}}}}},
+                         {"nodes", {{{"mesh", 0}}}},
+                         {"scenes", {{{"nodes", {0}}}}},
+                         {"scene", 0}};
+  const fs::path path = folder / "asset" / "leak.gltf";
+  std::ofstream(path) << gltf.dump();
+  return path;
+}
+
+// The message of the Io_error (unreadable input) reading `path` gives; "" when it reads.
+std::string read_failure(const fs::path& path, const apps::Read_options& options = {}) {
+  try {
+    apps::read_triangle_mesh(path.string(), options);
+  } catch (const apps::Io_error& e) {
+    EXPECT_EQ(e.kind(), apps::Io_error::Kind::unreadable_input);
+    return e.what();
+  }
+  return "";
+}
+
+std::string refused_buffer(const fs::path& gltf, const std::string& reference,
+                           const std::string& cause) {
+  return gltf.string() + ": a buffer's uri '" + reference + "' " + cause + " (" +
+         fs::canonical(gltf.parent_path()).string() + "); an asset root above it widens that";
+}
+
+TEST(AssetFolder, ABufferOutsideTheAssetsFolderIsRefusedWithoutBeingOpened) {
+  const fs::path folder = scratch("buffer_out");
+  const std::string outside = "leads outside the asset's folder";
+  // The reference as the file writes it, and as the message gives it (URI escapes decoded).
+  for (const auto& [uri, reference] : std::vector<std::pair<std::string, std::string>>{
+           {"../secret.bin", "../secret.bin"},
+           {"%2e%2e/secret.bin", "../secret.bin"},
+           {"..%2Fsecret.bin", "../secret.bin"},
+           {"..\\secret.bin", "..\\secret.bin"},
+           {"data/../../secret.bin", "data/../../secret.bin"},
+           {"../../../../../../../../../../etc/passwd",
+            "../../../../../../../../../../etc/passwd"}}) {
+    SCOPED_TRACE(uri);
+    const fs::path gltf = gltf_naming(folder, uri);
+    EXPECT_EQ(read_failure(gltf), refused_buffer(gltf, reference, outside));
+    // Its size wrong, the same message: nothing about the file it names, not even its size.
+    EXPECT_EQ(read_failure(gltf_naming(folder, uri, 12)), refused_buffer(gltf, reference, outside));
+  }
+  const fs::path gltf = gltf_naming(folder, (folder / "secret.bin").string());
+  EXPECT_EQ(read_failure(gltf),
+            refused_buffer(gltf, (folder / "secret.bin").string(),
+                           "is an absolute path; only paths relative to the asset are read"));
+  const std::string file_uri = "file://" + (folder / "secret.bin").string();
+  EXPECT_EQ(read_failure(gltf_naming(folder, file_uri)),
+            refused_buffer(gltf, file_uri,
+                           "is a URI with a scheme; only paths relative to the asset are read"));
+  // A reference too long for any file system is one line, cut short.
+  const std::string long_uri(5000, 'a');
+  EXPECT_EQ(read_failure(gltf_naming(folder, long_uri)),
+            refused_buffer(gltf, long_uri.substr(0, 200), "is too long"));
+  fs::remove_all(folder);
+}
+
+TEST(AssetFolder, ABufferInsideTheAssetsFolderIsRead) {
+  const fs::path folder = scratch("buffer_in");
+  for (const std::string uri : {"data/tri.bin", "data/../data/tri.bin", "./data//tri.bin"}) {
+    SCOPED_TRACE(uri);
+    EXPECT_EQ(apps::read_triangle_mesh(gltf_naming(folder, uri).string()).number_of_faces(), 1u);
+  }
+  // A symbolic link that stays inside is followed.
+  fs::create_directory_symlink(folder / "asset" / "data", folder / "asset" / "inner");
+  EXPECT_EQ(
+      apps::read_triangle_mesh(gltf_naming(folder, "inner/tri.bin").string()).number_of_faces(),
+      1u);
+  fs::remove_all(folder);
+}
+
+// Behind a folder that does not exist or a file, too ("missing/../link": the part of a path that
+// does not exist is not looked at by the resolution of links, so ".." must go first).
+TEST(AssetFolder, ASymbolicLinkOutOfTheAssetsFolderIsRefused) {
+  const fs::path folder = scratch("link_out");
+  fs::create_directory_symlink(folder, folder / "asset" / "up");
+  fs::create_symlink(folder / "secret.bin", folder / "asset" / "data" / "innocent.bin");
+  fs::create_symlink(folder / "secret.bin", folder / "asset" / "evil.bin");
+  for (const std::string uri :
+       {"up/secret.bin", "data/innocent.bin", "missing/../evil.bin", "data/tri.bin/../innocent.bin",
+        "missing/../data/innocent.bin", "data/missing/../../evil.bin"}) {
+    SCOPED_TRACE(uri);
+    const fs::path gltf = gltf_naming(folder, uri);
+    EXPECT_EQ(read_failure(gltf),
+              refused_buffer(gltf, uri,
+                             "leads outside the asset's folder through a symbolic link, or "
+                             "cannot be resolved"));
+  }
+  // A control character (a decoded %00 among them) is refused before any look at the disk.
+  const fs::path gltf = gltf_naming(folder, "data/tri.bin%00.png");
+  EXPECT_EQ(read_failure(gltf),
+            refused_buffer(gltf, "data/tri.bin\\x00.png", "holds a control character"));
+  fs::remove_all(folder);
+}
+
+TEST(AssetFolder, AnAssetRootWidensTheFolderAndNoMore) {
+  const fs::path folder = scratch("root");
+  const fs::path gltf = gltf_naming(folder, "../secret.bin");
+  const apps::Read_options widened{apps::Corner_attribute_reading::drop, 1, folder.string()};
+  EXPECT_EQ(apps::read_triangle_mesh(gltf.string(), widened).number_of_faces(), 1u);
+  // The root must hold the asset.
+  const apps::Read_options below{apps::Corner_attribute_reading::drop, 1,
+                                 (folder / "asset" / "data").string()};
+  EXPECT_EQ(read_failure(gltf, below),
+            gltf.string() + ": not inside the asset root " + (folder / "asset" / "data").string());
+  // Nothing above the root.
+  const fs::path deeper = folder / "asset" / "deeper";
+  fs::create_directories(deeper);
+  const fs::path moved = deeper / "leak.gltf";
+  fs::rename(gltf_naming(folder, "../../../secret.bin"), moved);
+  const apps::Read_options asset{apps::Corner_attribute_reading::drop, 1,
+                                 (folder / "asset").string()};
+  EXPECT_EQ(read_failure(moved, asset),
+            moved.string() +
+                ": a buffer's uri '../../../secret.bin' leads outside the asset's "
+                "folder (" +
+                fs::canonical(folder / "asset").string() + "); an asset root above it widens that");
+  fs::remove_all(folder);
+}
+
+// textured_square() as folder/asset/square.glb, its second image the file `uri` names.
+Mesh square_naming(const fs::path& folder, const std::string& uri, apps::Read_report& report) {
+  Gltf_builder square = gltf_fixtures::textured_square(0, 2);
+  square.model.images[1].uri = uri;
+  square.write(folder / "asset" / "square.glb");
+  return apps::read_triangle_mesh((folder / "asset" / "square.glb").string(), &report,
+                                  apps::Corner_attribute_reading::keep);
+}
+
+TEST(AssetFolder, AnImageOutsideTheAssetsFolderIsLeftOutAndNamedNowhere) {
+  const fs::path folder = scratch("image_out");
+  std::ofstream(folder / "hostname.png", std::ios::binary) << gltf_fixtures::kImageBytes;
+  apps::Read_report report;
+  const Mesh mesh = square_naming(folder, "..%2Fhostname.png", report);
+  const std::string in = (folder / "asset" / "square.glb").string();
+  EXPECT_EQ(report.left_out,
+            std::vector<std::string>{in + ": image 1's uri '..%2Fhostname.png' leads outside the "
+                                          "asset's folder; written without it"});
+  // The images held in the file stay; the texture that showed the file shows nothing, and its
+  // material refers to no texture.
+  const tinygltf::Model& looks = *report.materials.gltf;
+  ASSERT_EQ(looks.images.size(), 2u);
+  EXPECT_TRUE(looks.images[0].uri.empty() && looks.images[1].uri.empty());
+  ASSERT_EQ(looks.textures.size(), 3u);
+  EXPECT_EQ(looks.textures[0].source, 0);
+  EXPECT_EQ(looks.textures[1].source, -1);
+  EXPECT_EQ(looks.textures[2].source, 1);
+  EXPECT_EQ(looks.materials[1].pbrMetallicRoughness.baseColorTexture.index, -1);
+  for (const std::string name : {"out.gltf", "out.glb"}) {
+    const fs::path out = folder / "asset" / name;
+    EXPECT_EQ(apps::write_mesh_atomically(mesh, out.string(), report.materials),
+              std::vector<std::string>{});
+    const nlohmann::json written = gltf_json(out);
+    EXPECT_EQ(written["images"].size(), 2u);
+    EXPECT_EQ(written.dump().find("hostname"), std::string::npos);
+  }
+  fs::remove_all(folder);
+}
+
+TEST(AssetFolder, ObjLibrariesAndTexturesOutsideTheAssetsFolderAreLeftOut) {
+  const fs::path folder = scratch("obj_out");
+  const fs::path asset = folder / "asset";
+  std::ofstream(folder / "outside.mtl") << "newmtl wood\nKd 1 0 0\n";
+  std::ofstream(folder / "other.png", std::ios::binary) << gltf_fixtures::kImageBytes;
+  std::ofstream(asset / "looks.mtl") << "newmtl wood\nmap_Kd ../../../../../../../../etc/passwd\n"
+                                        "newmtl stone\nmap_Kd -s 1 1 1 ../other.png\n";
+  std::ofstream(asset / "in.obj")
+      << "mtllib ../outside.mtl looks.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\n"
+         "vt 0 1\nvt 1 1\nusemtl wood\nf 1/1 2/2 3/3\nusemtl stone\nf 2/2 4/4 3/3\n";
+  apps::Read_report report;
+  const Mesh mesh = apps::read_triangle_mesh((asset / "in.obj").string(), &report,
+                                             apps::Corner_attribute_reading::keep);
+  EXPECT_EQ(report.left_out,
+            std::vector<std::string>{(asset / "in.obj").string() +
+                                     ": material library '../outside.mtl' leads "
+                                     "outside the asset's folder; read without it"});
+  EXPECT_EQ(report.materials.libraries,
+            std::vector<std::string>{fs::canonical(asset / "looks.mtl").string()});
+  const std::string library = report.materials.libraries.front();
+  EXPECT_EQ(apps::write_mesh_atomically(mesh, (asset / "out.glb").string(), report.materials),
+            (std::vector<std::string>{
+                library + ": texture '../../../../../../../../etc/passwd' leads outside the "
+                          "asset's folder; written without it",
+                library + ": texture '../other.png' leads outside the asset's folder; written "
+                          "without it"}));
+  EXPECT_FALSE(gltf_json(asset / "out.glb").contains("images"));
+  // The picture's texture: the first map, refused by the same rule.
+  try {
+    apps::diffuse_texture_file(report.materials);
+    ADD_FAILURE() << "a texture outside the folder was drawn";
+  } catch (const apps::Io_error& e) {
+    EXPECT_EQ(std::string(e.what()), library +
+                                         ": texture '../../../../../../../../etc/passwd' leads "
+                                         "outside the asset's folder");
+  }
+  fs::remove_all(folder);
+}
+
+// A written file names files inside its own folder only: an OBJ input's library and textures
+// elsewhere are copied beside it, an image file elsewhere is embedded in a glTF file.
+TEST(AssetFolder, WrittenFilesNameNothingOutsideTheirFolder) {
+  const fs::path folder = scratch("written");
+  const fs::path asset = folder / "asset";
+  fs::create_directories(asset / "tex");
+  std::ofstream(asset / "tex" / "a.png", std::ios::binary) << gltf_fixtures::kImageBytes;
+  std::ofstream(asset / "tex" / "b.jpg", std::ios::binary) << gltf_fixtures::kJpegBytes;
+  std::ofstream(asset / "looks.mtl")
+      << "newmtl wood\nKd 0.5 0.5 0.5\nmap_Kd tex/a.png\nmap_Bump -bm 0.3 tex/b.jpg\n"
+         "newmtl stone\nmap_Kd tex/missing.png\nmap_Ks tex/a.png\n";
+  std::ofstream(asset / "in.obj")
+      << "mtllib looks.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n"
+         "vt 1 1\nusemtl wood\nf 1/1 2/2 3/3\nusemtl stone\nf 2/2 4/4 3/3\n";
+  apps::Read_report report;
+  const Mesh mesh = apps::read_triangle_mesh((asset / "in.obj").string(), &report,
+                                             apps::Corner_attribute_reading::keep);
+  const fs::path out = folder / "out";
+  fs::create_directories(out);
+  const std::string library = report.materials.libraries.front();
+  EXPECT_EQ(
+      apps::write_mesh_atomically(mesh, (out / "x.obj").string(), report.materials),
+      std::vector<std::string>{library + ": texture 'tex/missing.png' does not exist or cannot be "
+                                         "read; written without it"});
+  EXPECT_EQ(file_names(out), (std::set<std::string>{"x.obj", "x.mtl", "x_a.png", "x_b.jpg"}));
+  EXPECT_EQ(read_text(out / "x.mtl"),
+            "newmtl wood\nKd 0.5 0.5 0.5\nmap_Kd x_a.png\nmap_Bump -bm 0.3 x_b.jpg\n"
+            "newmtl stone\nmap_Ks x_a.png\n");
+  EXPECT_EQ(read_text(out / "x_a.png"), gltf_fixtures::kImageBytes);
+  EXPECT_EQ(read_text(out / "x.obj").rfind("# written by cgal_policies\nmtllib x.mtl\n", 0), 0u);
+  // Beside the input, the library is named as it is.
+  EXPECT_EQ(apps::write_mesh_atomically(mesh, (asset / "y.obj").string(), report.materials),
+            std::vector<std::string>{});
+  EXPECT_EQ(read_text(asset / "y.obj").rfind("# written by cgal_policies\nmtllib looks.mtl\n", 0),
+            0u);
+  EXPECT_FALSE(fs::exists(asset / "y.mtl"));
+  // A glTF input's image file: named beside the input, embedded elsewhere.
+  apps::Read_report gltf_report;
+  const Mesh square = square_naming(folder, "tex/a.png", gltf_report);
+  apps::write_mesh_atomically(square, (asset / "z.gltf").string(), gltf_report.materials);
+  EXPECT_EQ(gltf_json(asset / "z.gltf")["images"][1]["uri"], "tex/a.png");
+  apps::write_mesh_atomically(square, (out / "z.gltf").string(), gltf_report.materials);
+  const nlohmann::json embedded = gltf_json(out / "z.gltf");
+  EXPECT_FALSE(embedded["images"][1].contains("uri"));
+  EXPECT_EQ(embedded["images"][1]["mimeType"], "image/png");
+  for (const fs::path& written : {out / "x.obj", out / "x.mtl", out / "z.gltf"})
+    EXPECT_EQ(read_text(written).find(".."), std::string::npos) << written;
+  fs::remove_all(folder);
+}
+
+}  // namespace asset_folder
