@@ -1,11 +1,13 @@
-// What differs between the CGAL versions the library builds against (5.5 to 6.1), in one place.
-// From CGAL 6.0 on, the edge-collapse oracles exchange std::optional (before: boost::optional),
-// Surface_mesh::property_map() answers std::optional<Property_map> (before:
-// std::pair<Property_map, bool>), the AABB tree's traits and segment primitive are named with a _3,
-// and the edge-count stop predicates with an Edge_ (the old headers warn). Everything else the
-// library, the apps and the tests use is the same in both.
+// What differs between the CGAL versions the library builds against (5.5 to 6.1), in one place
+// with the edge-collapse oracles' optional type (Optional.h, included here). From CGAL 6.0 on,
+// Surface_mesh::property_map() answers std::optional<Property_map> (before: std::pair<Property_map,
+// bool>), the AABB tree's traits and segment primitive are named with a _3, and the edge-count stop
+// predicates with an Edge_ (the old headers warn). Everything else the library, the apps and the
+// tests use is the same in both.
 #ifndef CGAL_POLICIES_INTERNAL_CGAL_VERSION_H
 #define CGAL_POLICIES_INTERNAL_CGAL_VERSION_H
+
+#include <cgal_policies/internal/Optional.h>
 
 #include <CGAL/Surface_mesh/Surface_mesh_fwd.h>
 #include <CGAL/version.h>
@@ -29,22 +31,8 @@
 #include <optional>
 #include <string>
 
-#if CGAL_VERSION_NR < 1060000000
-#include <boost/optional.hpp>
-#endif
-
 namespace cgal_policies {
 namespace internal {
-
-// The optional type of CGAL's edge-collapse oracles: every policy, filter and placement names it
-// through this alias.
-#if CGAL_VERSION_NR >= 1060000000
-template <typename T>
-using Optional = std::optional<T>;
-#else
-template <typename T>
-using Optional = boost::optional<T>;
-#endif
 
 // The traits of CGAL::AABB_tree, and its primitive over segments given by an iterator.
 #if CGAL_VERSION_NR >= 1060000000
