@@ -111,12 +111,12 @@ def _gltf_naming(path, uri):
 
 
 def test_a_file_reads_nothing_outside_its_folder_unless_a_root_widens_it(tmp_path):
-    np.array([0, 0, 0, 1, 0, 0, 0, 1, 0], dtype="<f4").tofile(tmp_path / "shared.bin")
-    gltf = _gltf_naming(tmp_path / "asset" / "model.gltf", "../shared.bin")
-    with pytest.raises(ValueError, match=r"a buffer's uri '\.\./shared\.bin' leads outside the "
+    np.array([0, 0, 0, 1, 0, 0, 0, 1, 0], dtype="<f4").tofile(tmp_path / "common.bin")
+    gltf = _gltf_naming(tmp_path / "asset" / "model.gltf", "../common.bin")
+    with pytest.raises(ValueError, match=r"a buffer's uri '\.\./common\.bin' leads outside the "
                                          r"asset's folder"):
         cp.read(gltf)
     assert cp.read(gltf, asset_root=tmp_path).faces.shape == (1, 3)
-    outside = _gltf_naming(tmp_path / "asset" / "deeper" / "model.gltf", "../../../shared.bin")
+    outside = _gltf_naming(tmp_path / "asset" / "deeper" / "model.gltf", "../../../common.bin")
     with pytest.raises(ValueError, match="leads outside the asset's folder"):
         cp.read(outside, asset_root=tmp_path)

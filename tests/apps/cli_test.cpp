@@ -1552,14 +1552,14 @@ TEST_F(Cli, AnAssetNamingAFileOutsideItsFolderIsBadInput) {
 
   // A folder the assets share, above their own: read with --asset-root alone.
   const float triangle[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
-  write("shared.bin", std::string(reinterpret_cast<const char*>(triangle), sizeof triangle));
-  const fs::path shared = write("asset/shared.gltf", gltf("../shared.bin", 36));
-  expect_failure(shared.string() + " " + out.string() + " 1", 3, shared, out);
-  const Command_result widened = run(
-      "simplify", shared.string() + " " + out.string() + " 1 --asset-root " + file("").string());
+  write("common.bin", std::string(reinterpret_cast<const char*>(triangle), sizeof triangle));
+  const fs::path above = write("asset/above.gltf", gltf("../common.bin", 36));
+  expect_failure(above.string() + " " + out.string() + " 1", 3, above, out);
+  const Command_result widened =
+      run("simplify", above.string() + " " + out.string() + " 1 --asset-root " + file("").string());
   EXPECT_EQ(widened.exit_code, 0) << widened.err;
   const Command_result no_folder =
-      run("simplify", shared.string() + " " + out.string() + " 1 --force --asset-root " +
+      run("simplify", above.string() + " " + out.string() + " 1 --force --asset-root " +
                           file("missing").string());
   EXPECT_EQ(no_folder.exit_code, 2) << no_folder.err;
   EXPECT_EQ(no_folder.err,
