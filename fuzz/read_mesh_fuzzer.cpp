@@ -1,4 +1,4 @@
-// Fuzzes one reader (the extension is FUZZ_EXTENSION, one target per format): the bytes become a
+// Fuzzes one reader (the extension is kFuzzExtension, one target per format): the bytes become a
 // file that apps::read_triangle_mesh reads as simplify would when it keeps corner attributes
 // (texture coordinates, normals, colours and materials of OBJ, PLY and glTF). It
 // must give a valid triangle mesh or Io_error (unreadable input) with one line; anything else (a
@@ -21,6 +21,10 @@
 #include <string>
 #include <vector>
 
+// The reader's extension (".obj", ...), defined by each target's own one-line file
+// (fuzz/CMakeLists.txt), so that this file compiles once for every reader.
+extern const char* const kFuzzExtension;
+
 namespace {
 
 // One file per process, in memory when the machine has /dev/shm.
@@ -28,7 +32,7 @@ const std::string& input_path() {
   static const std::string path = [] {
     const std::filesystem::path folder =
         std::filesystem::is_directory("/dev/shm") ? "/dev/shm" : "/tmp";
-    return (folder / ("cgal_policies_fuzz_" + std::to_string(getpid()) + FUZZ_EXTENSION)).string();
+    return (folder / ("cgal_policies_fuzz_" + std::to_string(getpid()) + kFuzzExtension)).string();
   }();
   return path;
 }
@@ -87,7 +91,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const cgal_policies::io::Io_error& error) {
     require_unreadable_input(error, path);
   }
-  if (std::string(FUZZ_EXTENSION) == ".ply" || std::string(FUZZ_EXTENSION) == ".obj")
+  if (std::string(kFuzzExtension) == ".ply" || std::string(kFuzzExtension) == ".obj")
     read_in_passes(path);
   std::remove(path.c_str());
   return 0;
