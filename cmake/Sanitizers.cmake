@@ -37,9 +37,9 @@ function(cgal_policies_instrument_for_fuzzing target)
   endif()
 endfunction()
 
-# Tests that run heavy geometry in their own process (not through the apps' -O1 layers) run five
-# times faster at -O1 under the sanitizers, which pays for their longer compile many times over
-# (docs/compatibility.md). -O1 is what AddressSanitizer's authors advise; CGAL's assertions stay on.
+# Tests that run heavy geometry in their own process (not through the apps' -O1 layers) run much
+# faster at -O1 under the sanitizers, which pays for their longer compile (the figures:
+# docs/compatibility.md, "CI time"). CGAL's assertions stay on: no NDEBUG.
 function(cgal_policies_optimize_under_sanitizers target)
   if(CGAL_POLICIES_SANITIZE)
     target_compile_options(${target} PRIVATE -O1)
